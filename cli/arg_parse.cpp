@@ -1,0 +1,48 @@
+#include "arg_parse.h"
+
+#include <charconv>
+#include <cmath>
+#include <vector>
+
+namespace tp {
+namespace {
+std::vector<std::string> split(const std::string& s) {
+    std::vector<std::string> parts;
+    size_t start = 0;
+    for (size_t i = 0; i <= s.size(); ++i)
+        if (i == s.size() || s[i] == ',') {
+            parts.push_back(s.substr(start, i - start));
+            start = i + 1;
+        }
+    return parts;
+}
+} // namespace
+
+vec3 parse_vec3(const std::string& option, const std::string& text) {
+    const auto parts = split(text);
+    if (parts.size() != 3) input_error("{}: expected X,Y,Z, got '{}'", option, text);
+    vec3 v;
+    for (int i = 0; i < 3; ++i) {
+        const std::string& p = parts[size_t(i)];
+        const char* end = p.data() + p.size();
+        auto [ptr, ec] = std::from_chars(p.data(), end, v[i]);
+        if (ec != std::errc() || ptr != end || !std::isfinite(v[i]))
+            input_error("{}: '{}' is not a finite number", option, p);
+    }
+    return v;
+}
+
+uvec2 parse_pixel(const std::string& option, const std::string& text) {
+    const auto parts = split(text);
+    if (parts.size() != 2) input_error("{}: expected X,Y, got '{}'", option, text);
+    uvec2 v;
+    for (int i = 0; i < 2; ++i) {
+        const std::string& p = parts[size_t(i)];
+        const char* end = p.data() + p.size();
+        auto [ptr, ec] = std::from_chars(p.data(), end, v[i]);
+        if (ec != std::errc() || ptr != end) input_error("{}: '{}' is not a pixel coordinate", option, p);
+    }
+    return v;
+}
+
+} // namespace tp

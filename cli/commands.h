@@ -1,0 +1,19 @@
+// The twinpath subcommands (DESIGN.md, "Command line"). Each registers its options on the
+// CLI11 app and returns the function that runs it; that function returns the exit code.
+#pragma once
+
+#include <CLI/CLI.hpp>
+
+#include <functional>
+
+namespace tp {
+
+struct Subcommand {
+    CLI::App* app;
+    std::function<int()> run;
+};
+
+Subcommand add_render_command(CLI::App& app);
+Subcommand add_info_command(CLI::App& app);
+
+} // namespace tp

@@ -1,0 +1,45 @@
+// twinpath: one executable, subcommands render, compare, bench, pathdiff, info.
+// Exit codes: 0 success (compare: consistent), 1 compare found a difference, 2 bad usage or
+// bad input, 3 runtime failure (no device, out of memory, device lost).
+#include "commands.h"
+#include "util/error.h"
+
+#include <fmt/core.h>
+
+#include <vector>
+
+int main(int argc, char** argv) {
+    CLI::App app{"twinpath: dual-backend (Embree CPU reference / Vulkan) path tracer"};
+    app.require_subcommand(1);
+    const std::vector<tp::Subcommand> commands = {
+        tp::add_render_command(app),
+        tp::add_info_command(app),
+    };
+    try {
+        app.parse(argc, argv);
+    } catch (const CLI::CallForHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::CallForAllHelp& e) {
+        return app.exit(e);
+    } catch (const CLI::ParseError& e) {
+        app.exit(e);
+        return 2;
+    }
+    try {
+        for (const tp::Subcommand& c : commands)
+            if (c.app->parsed()) return c.run();
+        return 2;
+    } catch (const tp::InputError& e) {
+        fmt::print(stderr, "twinpath: error: {}\n", e.what());
+        return 2;
+    } catch (const tp::RuntimeError& e) {
+        fmt::print(stderr, "twinpath: error: {}\n", e.what());
+        return 3;
+    } catch (const std::bad_alloc&) {
+        fmt::print(stderr, "twinpath: error: out of host memory\n");
+        return 3;
+    } catch (const std::exception& e) {
+        fmt::print(stderr, "twinpath: internal error: {}\n", e.what());
+        return 3;
+    }
+}

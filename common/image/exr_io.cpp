@@ -1,0 +1,94 @@
+#include "image/exr_io.h"
+
+#include "util/error.h"
+
+#include <OpenEXR/ImfChannelList.h>
+#include <OpenEXR/ImfDoubleAttribute.h>
+#include <OpenEXR/ImfFloatAttribute.h>
+#include <OpenEXR/ImfFrameBuffer.h>
+#include <OpenEXR/ImfHeader.h>
+#include <OpenEXR/ImfInputFile.h>
+#include <OpenEXR/ImfIntAttribute.h>
+#include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStringAttribute.h>
+
+#include <cstdio>
+#include <filesystem>
+
+namespace tp {
+
+const std::vector<float>& ExrImage::channel(const std::string& name) const {
+    auto it = channels.find(name);
+    if (it == channels.end()) input_error("image has no channel '{}'", name);
+    return it->second;
+}
+
+void write_exr(const std::string& path, const ExrImage& image) {
+    const std::string tmp = path + ".partial";
+    try {
+        Imf::Header header(image.width, image.height);
+        header.compression() = Imf::ZIP_COMPRESSION;
+        for (const auto& [name, data] : image.channels) {
+            if (data.size() != size_t(image.width) * size_t(image.height))
+                runtime_error("{}: channel {} has {} values for {}x{} pixels", path, name,
+                              data.size(), image.width, image.height);
+            header.channels().insert(name, Imf::Channel(Imf::FLOAT));
+        }
+        for (const auto& [k, v] : image.strings) header.insert(k, Imf::StringAttribute(v));
+        for (const auto& [k, v] : image.integers) header.insert(k, Imf::IntAttribute(int(v)));
+        for (const auto& [k, v] : image.reals) header.insert(k, Imf::DoubleAttribute(v));
+        Imf::OutputFile file(tmp.c_str(), header);
+        Imf::FrameBuffer fb;
+        for (const auto& [name, data] : image.channels)
+            fb.insert(name, Imf::Slice(Imf::FLOAT, (char*)data.data(), sizeof(float),
+                                       sizeof(float) * size_t(image.width)));
+        file.setFrameBuffer(fb);
+        file.writePixels(image.height);
+    } catch (const std::exception& e) {
+        std::remove(tmp.c_str());
+        if (dynamic_cast<const RuntimeError*>(&e)) throw;
+        runtime_error("cannot write {}: {}", path, e.what());
+    }
+    std::error_code ec;
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) {
+        std::remove(tmp.c_str());
+        runtime_error("cannot write {}: {}", path, ec.message());
+    }
+}
+
+ExrImage read_exr(const std::string& path) {
+    if (!std::filesystem::exists(path)) input_error("{}: no such file", path);
+    ExrImage image;
+    try {
+        Imf::InputFile file(path.c_str());
+        const Imf::Header& header = file.header();
+        const Imath::Box2i dw = header.dataWindow();
+        image.width = dw.max.x - dw.min.x + 1;
+        image.height = dw.max.y - dw.min.y + 1;
+        const size_t n = size_t(image.width) * size_t(image.height);
+        Imf::FrameBuffer fb;
+        for (auto it = header.channels().begin(); it != header.channels().end(); ++it) {
+            auto& data = image.channels[it.name()];
+            data.resize(n);
+            // The slice base is offset so that data window pixel (min.x, min.y) lands at 0.
+            char* base = (char*)data.data() -
+                         (ptrdiff_t(dw.min.x) + ptrdiff_t(dw.min.y) * image.width) * ptrdiff_t(sizeof(float));
+            fb.insert(it.name(), Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * size_t(image.width)));
+        }
+        file.setFrameBuffer(fb);
+        file.readPixels(dw.min.y, dw.max.y);
+        for (auto it = header.begin(); it != header.end(); ++it) {
+            const Imf::Attribute& a = it.attribute();
+            if (auto* s = dynamic_cast<const Imf::StringAttribute*>(&a)) image.strings[it.name()] = s->value();
+            else if (auto* i = dynamic_cast<const Imf::IntAttribute*>(&a)) image.integers[it.name()] = i->value();
+            else if (auto* d = dynamic_cast<const Imf::DoubleAttribute*>(&a)) image.reals[it.name()] = d->value();
+            else if (auto* f = dynamic_cast<const Imf::FloatAttribute*>(&a)) image.reals[it.name()] = f->value();
+        }
+    } catch (const std::exception& e) {
+        input_error("{}: not a readable OpenEXR image: {}", path, e.what());
+    }
+    return image;
+}
+
+} // namespace tp

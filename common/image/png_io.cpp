@@ -1,0 +1,73 @@
+#include "image/png_io.h"
+
+#include "util/error.h"
+
+#include <png.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
+#include <filesystem>
+#include <memory>
+
+namespace tp {
+
+float linear_to_srgb(float x) {
+    x = std::clamp(x, 0.0f, 1.0f);
+    return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
+}
+
+float srgb_to_linear(float x) {
+    return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
+}
+
+std::vector<uint8_t> tonemap_srgb8(const std::vector<float>& r, const std::vector<float>& g,
+                                   const std::vector<float>& b, float exposure_stops) {
+    const float scale = std::exp2(exposure_stops);
+    std::vector<uint8_t> out(r.size() * 3);
+    for (size_t i = 0; i < r.size(); ++i) {
+        const float c[3] = {r[i], g[i], b[i]};
+        const bool finite = std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]);
+        for (int k = 0; k < 3; ++k) {
+            const float v = finite ? linear_to_srgb(c[k] * scale) : (k == 1 ? 0.0f : 1.0f);
+            out[3 * i + k] = uint8_t(std::lround(v * 255.0f));
+        }
+    }
+    return out;
+}
+
+void write_png(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb) {
+    if (rgb.size() != size_t(width) * size_t(height) * 3)
+        runtime_error("{}: {} bytes for a {}x{} RGB image", path, rgb.size(), width, height);
+    const std::string tmp = path + ".partial";
+    FILE* f = std::fopen(tmp.c_str(), "wb");
+    if (!f) runtime_error("cannot write {}: {}", path, std::strerror(errno));
+    png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
+    png_infop info = png ? png_create_info_struct(png) : nullptr;
+    if (!png || !info || setjmp(png_jmpbuf(png))) {
+        png_destroy_write_struct(&png, &info);
+        std::fclose(f);
+        std::remove(tmp.c_str());
+        runtime_error("cannot write {}: libpng failed", path);
+    }
+    png_init_io(png, f);
+    png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB,
+                 PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
+    png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
+    png_write_info(png, info);
+    for (int y = 0; y < height; ++y)
+        png_write_row(png, rgb.data() + size_t(y) * size_t(width) * 3);
+    png_write_end(png, nullptr);
+    png_destroy_write_struct(&png, &info);
+    if (std::fclose(f) != 0) {
+        std::remove(tmp.c_str());
+        runtime_error("cannot write {}: {}", path, std::strerror(errno));
+    }
+    std::error_code ec;
+    std::filesystem::rename(tmp, path, ec);
+    if (ec) runtime_error("cannot write {}: {}", path, ec.message());
+}
+
+} // namespace tp

@@ -1,0 +1,23 @@
+// 8-bit PNG output through libpng (every build, the GPU bundle too) and the sRGB preview
+// tone mapping used for `--png` and compare reports.
+#pragma once
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tp {
+
+// rgb: width * height * 3 bytes, rows top to bottom. Written via a temporary file and a
+// rename, so a failure leaves no partial file. Throws RuntimeError.
+void write_png(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb);
+
+// Linear radiance to display: multiply by 2^exposure, clamp to [0, 1], apply the sRGB transfer
+// function (IEC 61966-2-1), round. Non-finite values become magenta so they cannot hide.
+std::vector<uint8_t> tonemap_srgb8(const std::vector<float>& r, const std::vector<float>& g,
+                                   const std::vector<float>& b, float exposure_stops);
+
+float linear_to_srgb(float linear);
+float srgb_to_linear(float encoded);
+
+} // namespace tp

@@ -1,0 +1,15 @@
+// Image textures and environment maps from files. With OpenImageIO (the default build) any
+// format it reads; without it (the GPU bundle) OpenEXR only. 8-bit images are taken as sRGB
+// and decoded to linear; float images are taken as linear.
+#pragma once
+
+#include "scene/scene.h"
+
+#include <string>
+
+namespace tp {
+
+// Throws InputError naming the file when it is missing, unreadable or unsupported.
+Texture load_texture(const std::string& path);
+
+} // namespace tp

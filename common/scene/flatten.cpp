@@ -1,0 +1,212 @@
+#include "scene/flatten.h"
+
+#include "scene/alias_table.h"
+#include "shared/camera.h"
+#include "shared/math.h"
+#include "shared/surface.h"
+#include "shared/texture.h"
+#include "util/error.h"
+
+#include <glm/gtc/constants.hpp>
+#include <glm/gtc/matrix_inverse.hpp>
+
+#include <cmath>
+#include <map>
+
+namespace tp {
+
+void apply_overrides(Scene& scene, const SceneOverrides& o) {
+    if (o.width) scene.settings.width = *o.width;
+    if (o.height) scene.settings.height = *o.height;
+    if (o.spp) scene.settings.spp = *o.spp;
+    if (o.max_depth) scene.settings.max_depth = *o.max_depth;
+    if (o.min_depth) scene.settings.min_depth = *o.min_depth;
+    if (o.eye) scene.camera.eye = *o.eye;
+    if (o.target) scene.camera.target = *o.target;
+    if (o.up) scene.camera.up = *o.up;
+    if (o.fov) scene.camera.fov_y_degrees = *o.fov;
+    if (o.eye || o.target) scene.camera.given = true;
+}
+
+namespace {
+
+void store_rows(const glm::mat4& m, vec4& r0, vec4& r1, vec4& r2) {
+    r0 = vec4(m[0][0], m[1][0], m[2][0], m[3][0]);
+    r1 = vec4(m[0][1], m[1][1], m[2][1], m[3][1]);
+    r2 = vec4(m[0][2], m[1][2], m[2][2], m[3][2]);
+}
+
+void check_camera(const CameraDesc& c, const RenderSettings& s) {
+    if (s.width == 0 || s.height == 0) input_error("film: width and height must be positive");
+    if (!is_finite3(c.eye) || !is_finite3(c.target) || !is_finite3(c.up))
+        input_error("camera: eye, target and up must be finite");
+    if (!(c.fov_y_degrees > 0.0f && c.fov_y_degrees < 180.0f))
+        input_error("camera: fov must lie in (0, 180) degrees, got {}", c.fov_y_degrees);
+    const vec3 d = c.target - c.eye;
+    if (glm::length(d) == 0.0f) input_error("camera: eye and target coincide");
+    if (glm::length(glm::cross(glm::normalize(d), c.up)) < 1e-6f)
+        input_error("camera: up is zero or parallel to the viewing direction");
+}
+
+// Places the camera on +Z of the bounding sphere's centre, far enough for the sphere to fit
+// the vertical field of view, keeping any of eye/target the user gave.
+void frame_camera(CameraDesc& c, vec3 lo, vec3 hi, float aspect) {
+    const vec3 centre = 0.5f * (lo + hi);
+    const float radius = std::max(0.5f * glm::length(hi - lo), 1e-6f);
+    const float half = glm::radians(0.5f * c.fov_y_degrees) * std::min(aspect, 1.0f);
+    c.target = centre;
+    c.eye = centre + vec3(0.0f, 0.0f, 1.05f * radius / std::sin(half));
+}
+
+} // namespace
+
+FlatScene flatten(const Scene& scene) {
+    FlatScene f;
+    f.name = scene.path;
+    f.spp = scene.settings.spp;
+    f.materials = scene.materials;
+
+    // Meshes that some object uses, each stored once.
+    std::map<uint32_t, uint32_t> mesh_slot;
+    for (const Object& o : scene.objects) {
+        if (mesh_slot.count(o.mesh)) continue;
+        const Mesh& m = scene.meshes[o.mesh];
+        MeshInfo info{};
+        info.first_triangle = uint32_t(f.triangles.size());
+        info.first_vertex = uint32_t(f.positions.size());
+        info.triangle_count = uint32_t(m.triangles.size());
+        info.vertex_count = uint32_t(m.positions.size());
+        info.flags = (m.normals.empty() ? 0u : MESH_HAS_NORMALS) | (m.uvs.empty() ? 0u : MESH_HAS_UVS);
+        info.bvh_root = NO_INDEX;
+        f.positions.insert(f.positions.end(), m.positions.begin(), m.positions.end());
+        if (m.normals.empty()) f.normals.resize(f.positions.size(), vec3(0.0f));
+        else f.normals.insert(f.normals.end(), m.normals.begin(), m.normals.end());
+        if (m.uvs.empty()) f.uvs.resize(f.positions.size(), vec2(0.0f));
+        else f.uvs.insert(f.uvs.end(), m.uvs.begin(), m.uvs.end());
+        f.triangles.insert(f.triangles.end(), m.triangles.begin(), m.triangles.end());
+        f.unique_triangles += m.triangles.size();
+        mesh_slot[o.mesh] = uint32_t(f.meshes.size());
+        f.meshes.push_back(info);
+    }
+
+    // Instances and the world bounds.
+    f.bounds_min = vec3(FLOAT_MAX);
+    f.bounds_max = vec3(-FLOAT_MAX);
+    for (const Object& o : scene.objects) {
+        Instance inst{};
+        store_rows(o.transform, inst.to_world0, inst.to_world1, inst.to_world2);
+        store_rows(glm::affineInverse(o.transform), inst.to_object0, inst.to_object1, inst.to_object2);
+        inst.mesh = mesh_slot.at(o.mesh);
+        inst.material = o.material;
+        inst.light_offset = NO_INDEX;
+        for (const vec3& p : scene.meshes[o.mesh].positions) {
+            const vec3 w = vec3(o.transform * vec4(p, 1.0f));
+            f.bounds_min = glm::min(f.bounds_min, w);
+            f.bounds_max = glm::max(f.bounds_max, w);
+        }
+        f.instanced_triangles += scene.meshes[o.mesh].triangles.size();
+        f.instances.push_back(inst);
+        f.instance_names.push_back(o.name);
+    }
+    if (f.instances.empty()) input_error("{}: the scene has no objects", scene.path);
+
+    // Camera.
+    CameraDesc cam = scene.camera;
+    const float aspect = float(scene.settings.width) / float(std::max(scene.settings.height, 1u));
+    if (!cam.given) frame_camera(cam, f.bounds_min, f.bounds_max, aspect);
+    check_camera(cam, scene.settings);
+    f.params.camera = camera_make(cam.eye, cam.target, cam.up, cam.fov_y_degrees,
+                                  scene.settings.width, scene.settings.height);
+    f.params.max_depth = scene.settings.max_depth;
+    f.params.min_depth = scene.settings.min_depth;
+
+    // Textures, concatenated.
+    for (const Texture& t : scene.textures) {
+        TextureInfo info{};
+        info.offset = uint32_t(f.texels.size());
+        info.width = t.width;
+        info.height = t.height;
+        f.textures.push_back(info);
+        f.texels.insert(f.texels.end(), t.texels.begin(), t.texels.end());
+    }
+
+    // Lights, with selection weights proportional to an estimate of emitted power; any
+    // positive weights give an unbiased estimator, power makes it efficient.
+    const double pi = glm::pi<double>();
+    const double radius = 0.5 * double(glm::length(f.bounds_max - f.bounds_min));
+    const double disk = pi * radius * radius;
+    std::vector<double> weights;
+    for (const Light& l : scene.lights) {
+        f.lights.push_back(l);
+        const double lum = double(luminance(l.value));
+        weights.push_back(l.type == LIGHT_POINT ? 4.0 * pi * lum : disk * lum);
+    }
+    for (uint32_t i = 0; i < f.instances.size(); ++i) {
+        Instance& inst = f.instances[i];
+        const Material& m = f.materials[inst.material];
+        if (is_black(m.ke)) continue;
+        const MeshInfo& mesh = f.meshes[inst.mesh];
+        inst.light_offset = uint32_t(f.lights.size());
+        for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
+            const uvec3 tri = f.triangles[mesh.first_triangle + t];
+            Light l{};
+            l.type = LIGHT_TRIANGLE;
+            l.p0 = instance_point_to_world(inst, f.positions[mesh.first_vertex + tri.x]);
+            l.p1 = instance_point_to_world(inst, f.positions[mesh.first_vertex + tri.y]);
+            l.p2 = instance_point_to_world(inst, f.positions[mesh.first_vertex + tri.z]);
+            l.area = 0.5f * glm::length(glm::cross(l.p1 - l.p0, l.p2 - l.p0));
+            l.instance = i;
+            l.primitive = t;
+            l.value = m.ke;
+            f.lights.push_back(l);
+            weights.push_back(pi * double(l.area) * double(luminance(m.ke)));
+        }
+    }
+    f.params.env_light = NO_INDEX;
+    f.params.env_texture = NO_TEXTURE;
+    f.params.env_rotation = glm::radians(scene.environment.rotation_degrees);
+    if (scene.environment.kind != EnvironmentKind::None) {
+        Light l{};
+        l.type = LIGHT_ENVIRONMENT;
+        l.value = scene.environment.radiance;
+        double mean_luminance = double(luminance(l.value));
+        if (scene.environment.kind == EnvironmentKind::Map) {
+            const Texture& t = scene.textures.at(size_t(scene.environment.texture));
+            f.params.env_texture = scene.environment.texture;
+            // Pixel (x, y) covers solid angle (2 pi / w)(pi / h) sin(theta_y).
+            std::vector<double> pixel_w(t.texels.size());
+            double integral = 0.0;
+            for (uint32_t y = 0; y < t.height; ++y) {
+                const double sin_theta = std::sin(pi * (y + 0.5) / t.height);
+                for (uint32_t x = 0; x < t.width; ++x) {
+                    const size_t i = size_t(y) * t.width + x;
+                    pixel_w[i] = double(luminance(t.texels[i])) * sin_theta;
+                    integral += pixel_w[i];
+                }
+            }
+            const double solid_angle_per_weight = 2.0 * pi * pi / (double(t.width) * t.height);
+            mean_luminance *= integral * solid_angle_per_weight / (4.0 * pi);
+            if (integral > 0.0) f.env_table = build_alias_table(pixel_w);
+        }
+        if (mean_luminance > 0.0) {
+            f.params.env_light = uint32_t(f.lights.size());
+            f.lights.push_back(l);
+            // Flux into the bounding sphere from a uniform surround of radiance L: 4 pi^2 r^2 L.
+            weights.push_back(4.0 * pi * disk * mean_luminance);
+        }
+    }
+    f.params.env_alias_offset = 0;
+
+    double total = 0.0;
+    for (double w : weights) total += w;
+    if (total > 0.0) f.light_table = build_alias_table(weights);
+    else f.lights.clear(); // nothing emits: no next-event estimation at all
+    if (f.lights.empty()) {
+        f.params.env_light = NO_INDEX;
+        for (Instance& inst : f.instances) inst.light_offset = NO_INDEX;
+    }
+    f.params.light_count = uint32_t(f.lights.size());
+    return f;
+}
+
+} // namespace tp

@@ -1,0 +1,442 @@
+#include "scene/json_loader.h"
+
+#include "image/texture_io.h"
+#include "scene/generators.h"
+#include "scene/obj_loader.h"
+#include "util/error.h"
+
+#include <glm/gtc/matrix_transform.hpp>
+#include <nlohmann/json.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <map>
+#include <set>
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace tp {
+namespace {
+
+// Reads one JSON file; every accessor checks type, range and unknown keys and reports the
+// field path on failure.
+class Reader {
+  public:
+    explicit Reader(std::string file) : file_(std::move(file)) {}
+
+    [[noreturn]] void fail(const std::string& field, const std::string& what) const {
+        throw InputError(fmt::format("{}: {}: {}", file_, field, what));
+    }
+
+    void keys(const json& j, const std::string& field, std::initializer_list<const char*> allowed) const {
+        if (!j.is_object()) fail(field, "expected an object");
+        std::set<std::string> ok(allowed.begin(), allowed.end());
+        for (const auto& item : j.items())
+            if (!ok.count(item.key())) {
+                std::string list;
+                for (const char* a : allowed) list += fmt::format("{}{}", list.empty() ? "" : ", ", a);
+                fail(join(field, item.key()), fmt::format("unknown key (expected one of: {})", list));
+            }
+    }
+
+    static std::string join(const std::string& a, const std::string& b) { return a.empty() ? b : a + "." + b; }
+
+    float number(const json& j, const std::string& field) const {
+        if (!j.is_number()) fail(field, "expected a number");
+        const double v = j.get<double>();
+        if (!std::isfinite(v) || std::abs(v) > 3.4e38) fail(field, "must be a finite float");
+        return float(v);
+    }
+
+    float number(const json& j, const std::string& field, float lo, float hi) const {
+        const float v = number(j, field);
+        if (v < lo || v > hi) fail(field, fmt::format("must lie in [{}, {}], got {}", lo, hi, v));
+        return v;
+    }
+
+    uint32_t count(const json& j, const std::string& field, uint32_t lo, uint32_t hi) const {
+        if (!j.is_number_integer()) fail(field, "expected an integer");
+        const long long v = j.get<long long>();
+        if (v < lo || v > hi) fail(field, fmt::format("must lie in [{}, {}], got {}", lo, hi, v));
+        return uint32_t(v);
+    }
+
+    vec3 vector3(const json& j, const std::string& field) const {
+        if (!j.is_array() || j.size() != 3) fail(field, "expected an array of 3 numbers");
+        return vec3(number(j[0], field + "[0]"), number(j[1], field + "[1]"), number(j[2], field + "[2]"));
+    }
+
+    vec3 color(const json& j, const std::string& field) const {
+        const vec3 c = vector3(j, field);
+        if (c.x < 0 || c.y < 0 || c.z < 0) fail(field, "colors must not be negative");
+        return c;
+    }
+
+    std::string string(const json& j, const std::string& field) const {
+        if (!j.is_string()) fail(field, "expected a string");
+        return j.get<std::string>();
+    }
+
+    bool boolean(const json& j, const std::string& field) const {
+        if (!j.is_boolean()) fail(field, "expected true or false");
+        return j.get<bool>();
+    }
+
+    const json& required(const json& j, const std::string& field, const char* key) const {
+        if (!j.contains(key)) fail(join(field, key), "is required");
+        return j[key];
+    }
+
+    fs::path file_path(const json& j, const std::string& field) const {
+        fs::path p = string(j, field);
+        if (p.is_relative()) p = fs::path(file_).parent_path() / p;
+        if (!fs::exists(p)) fail(field, fmt::format("file '{}' does not exist", p.string()));
+        return p;
+    }
+
+    const std::string& file() const { return file_; }
+
+  private:
+    std::string file_;
+};
+
+json parse_file(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) input_error("{}: cannot open file", path);
+    try {
+        return json::parse(in);
+    } catch (const json::parse_error& e) {
+        // nlohmann's message carries "at line L, column C".
+        input_error("{}: malformed JSON: {}", path, e.what());
+    }
+}
+
+glm::mat4 read_transform(const Reader& r, const json& j, const std::string& field) {
+    if (j.is_array()) { // 16 numbers, row-major
+        if (j.size() != 16) r.fail(field, "a matrix needs 16 numbers (row-major 4x4)");
+        glm::mat4 m;
+        for (int row = 0; row < 4; ++row)
+            for (int col = 0; col < 4; ++col)
+                m[col][row] = r.number(j[row * 4 + col], fmt::format("{}[{}]", field, row * 4 + col));
+        if (m[0][3] != 0 || m[1][3] != 0 || m[2][3] != 0 || m[3][3] != 1)
+            r.fail(field, "the last row must be 0 0 0 1 (affine transforms only)");
+        return m;
+    }
+    r.keys(j, field, {"translate", "rotate", "scale"});
+    glm::mat4 m(1.0f);
+    if (j.contains("translate")) m = glm::translate(m, r.vector3(j["translate"], field + ".translate"));
+    if (j.contains("rotate")) {
+        const json& rot = j["rotate"];
+        std::vector<const json*> list;
+        if (rot.is_array())
+            for (const auto& e : rot) list.push_back(&e);
+        else
+            list.push_back(&rot);
+        // Listed rotations apply in order, so the first is innermost: M = R_n ... R_1.
+        glm::mat4 rm(1.0f);
+        for (size_t i = 0; i < list.size(); ++i) {
+            const std::string f = rot.is_array() ? fmt::format("{}.rotate[{}]", field, i) : field + ".rotate";
+            r.keys(*list[i], f, {"axis", "degrees"});
+            const vec3 axis = r.vector3(r.required(*list[i], f, "axis"), f + ".axis");
+            if (glm::length(axis) == 0.0f) r.fail(f + ".axis", "must not be zero");
+            const float deg = r.number(r.required(*list[i], f, "degrees"), f + ".degrees");
+            rm = glm::rotate(glm::mat4(1.0f), glm::radians(deg), glm::normalize(axis)) * rm;
+        }
+        m = m * rm;
+    }
+    if (j.contains("scale")) {
+        const json& s = j["scale"];
+        const vec3 sv = s.is_number() ? vec3(r.number(s, field + ".scale")) : r.vector3(s, field + ".scale");
+        m = glm::scale(m, sv);
+    }
+    return m;
+}
+
+Mesh inline_mesh(const Reader& r, const json& j, const std::string& field) {
+    Mesh m;
+    const json& verts = r.required(j, field, "vertices");
+    if (!verts.is_array() || verts.empty()) r.fail(field + ".vertices", "expected a non-empty array of [x, y, z]");
+    for (size_t i = 0; i < verts.size(); ++i)
+        m.positions.push_back(r.vector3(verts[i], fmt::format("{}.vertices[{}]", field, i)));
+    auto index = [&](const json& e, const std::string& f) {
+        const uint32_t v = r.count(e, f, 0, 0xFFFFFFFEu);
+        if (v >= m.positions.size()) r.fail(f, fmt::format("index {} is out of range: {} vertices", v, m.positions.size()));
+        return v;
+    };
+    if (j.contains("triangles")) {
+        const json& t = j["triangles"];
+        if (!t.is_array()) r.fail(field + ".triangles", "expected an array of [i, j, k]");
+        for (size_t i = 0; i < t.size(); ++i) {
+            const std::string f = fmt::format("{}.triangles[{}]", field, i);
+            if (!t[i].is_array() || t[i].size() != 3) r.fail(f, "expected 3 vertex indices");
+            m.triangles.push_back({index(t[i][0], f), index(t[i][1], f), index(t[i][2], f)});
+        }
+    }
+    if (j.contains("quads")) {
+        const json& q = j["quads"];
+        if (!q.is_array()) r.fail(field + ".quads", "expected an array of [i, j, k, l]");
+        for (size_t i = 0; i < q.size(); ++i) {
+            const std::string f = fmt::format("{}.quads[{}]", field, i);
+            if (!q[i].is_array() || q[i].size() != 4) r.fail(f, "expected 4 vertex indices");
+            const uint32_t a = index(q[i][0], f), b = index(q[i][1], f), c = index(q[i][2], f), d = index(q[i][3], f);
+            m.triangles.push_back({a, b, c});
+            m.triangles.push_back({a, c, d});
+        }
+    }
+    if (m.triangles.empty()) r.fail(field, "needs \"triangles\" or \"quads\"");
+    return m;
+}
+
+// A mesh entry: either one mesh (generated or inline) or the parts of an OBJ file.
+struct MeshRef {
+    std::vector<ObjPart> parts; // material NO_INDEX: the object must name one
+};
+
+MeshRef read_mesh(const Reader& r, const json& j, const std::string& field, Scene& scene,
+                  std::vector<std::string>& warnings) {
+    const std::string type = r.string(r.required(j, field, "type"), field + ".type");
+    MeshRef ref;
+    Mesh m;
+    if (type == "obj") {
+        r.keys(j, field, {"type", "file"});
+        const fs::path file = r.file_path(r.required(j, field, "file"), field + ".file");
+        // Faces without usemtl get NO_INDEX; the object must then give a material.
+        const uint32_t unset = NO_INDEX;
+        ref.parts = load_obj(file.string(), scene, unset, warnings);
+        return ref;
+    } else if (type == "sphere") {
+        r.keys(j, field, {"type", "subdivisions", "inward"});
+        const uint32_t sub = j.contains("subdivisions") ? r.count(j["subdivisions"], field + ".subdivisions", 0, 8) : 4;
+        const bool inward = j.contains("inward") && r.boolean(j["inward"], field + ".inward");
+        m = make_icosphere(sub, inward);
+    } else if (type == "quad") {
+        r.keys(j, field, {"type"});
+        m = make_quad();
+    } else if (type == "box") {
+        r.keys(j, field, {"type"});
+        m = make_box();
+    } else if (type == "triangles") {
+        r.keys(j, field, {"type", "vertices", "triangles", "quads"});
+        m = inline_mesh(r, j, field);
+    } else {
+        r.fail(field + ".type", fmt::format("unknown mesh type '{}' (expected obj, sphere, quad, box, triangles)", type));
+    }
+    finalize_mesh(m, fmt::format("{}: {}", r.file(), field), scene.skipped_triangles);
+    if (m.triangles.empty()) r.fail(field, "has no triangles left after dropping degenerate ones");
+    scene.meshes.push_back(std::move(m));
+    ref.parts.push_back(ObjPart{uint32_t(scene.meshes.size() - 1), NO_INDEX});
+    return ref;
+}
+
+Texture read_texture(const Reader& r, const json& j, const std::string& field) {
+    if (j.contains("file")) {
+        r.keys(j, field, {"file"});
+        return load_texture(r.file_path(j["file"], field + ".file").string());
+    }
+    const std::string gen = r.string(r.required(j, field, "generator"), field + ".generator");
+    const uint32_t size = j.contains("size") ? r.count(j["size"], field + ".size", 1, 8192) : 512;
+    vec3 a(0.8f), b(0.2f);
+    if (j.contains("colors")) {
+        const json& c = j["colors"];
+        if (!c.is_array() || c.size() != 2) r.fail(field + ".colors", "expected two colors");
+        a = r.color(c[0], field + ".colors[0]");
+        b = r.color(c[1], field + ".colors[1]");
+    }
+    if (gen == "checker") {
+        r.keys(j, field, {"generator", "size", "colors", "checks"});
+        const uint32_t checks = j.contains("checks") ? r.count(j["checks"], field + ".checks", 1, size) : 8;
+        return make_checker_texture(size, checks, a, b);
+    }
+    if (gen == "marble") {
+        r.keys(j, field, {"generator", "size", "colors", "scale", "seed"});
+        const float scale = j.contains("scale") ? r.number(j["scale"], field + ".scale", 0.0f, 1000.0f) : 4.0f;
+        const uint32_t seed = j.contains("seed") ? r.count(j["seed"], field + ".seed", 0, 0xFFFFFFFFu) : 1;
+        return make_marble_texture(size, scale, a, b, seed);
+    }
+    r.fail(field + ".generator", fmt::format("unknown generator '{}' (expected checker or marble)", gen));
+}
+
+Material read_material(const Reader& r, const json& j, const std::string& field,
+                       const std::map<std::string, uint32_t>& textures) {
+    r.keys(j, field, {"type", "Kd", "Ks", "Ns", "Ke", "Ni", "Tf", "map_Kd"});
+    Material m = default_material();
+    const std::string type = j.contains("type") ? r.string(j["type"], field + ".type") : "phong";
+    if (type == "phong") m.type = MATERIAL_PHONG;
+    else if (type == "mirror") m.type = MATERIAL_MIRROR;
+    else if (type == "dielectric") m.type = MATERIAL_DIELECTRIC;
+    else r.fail(field + ".type", fmt::format("unknown material type '{}' (expected phong, mirror, dielectric)", type));
+    if (j.contains("Kd")) m.kd = r.color(j["Kd"], field + ".Kd");
+    if (j.contains("Ks")) m.ks = r.color(j["Ks"], field + ".Ks");
+    if (j.contains("Ke")) m.ke = r.color(j["Ke"], field + ".Ke");
+    if (j.contains("Tf")) m.tf = r.color(j["Tf"], field + ".Tf");
+    if (j.contains("Ns")) m.ns = r.number(j["Ns"], field + ".Ns", 0.0f, 1e7f);
+    if (j.contains("Ni")) m.ior = r.number(j["Ni"], field + ".Ni", 1e-3f, 100.0f);
+    if (j.contains("map_Kd")) {
+        const std::string name = r.string(j["map_Kd"], field + ".map_Kd");
+        auto it = textures.find(name);
+        if (it == textures.end()) r.fail(field + ".map_Kd", fmt::format("no texture named '{}'", name));
+        m.kd_texture = int(it->second);
+    }
+    if (m.type == MATERIAL_MIRROR && !j.contains("Ks")) m.ks = vec3(1.0f);
+    if (m.type == MATERIAL_PHONG && !j.contains("Kd") && !j.contains("Ks") && !j.contains("Ke"))
+        r.fail(field, "a phong material needs at least one of Kd, Ks, Ke");
+    validate_material(m, fmt::format("{}: {}", r.file(), field));
+    return m;
+}
+
+} // namespace
+
+Scene load_json_scene(const std::string& path, std::vector<std::string>& warnings) {
+    const json root = parse_file(path);
+    const Reader r(path);
+    r.keys(root, "", {"camera", "film", "render", "textures", "materials", "meshes", "objects", "lights", "environment"});
+    Scene scene;
+    scene.path = path;
+
+    if (root.contains("camera")) {
+        const json& c = root["camera"];
+        r.keys(c, "camera", {"eye", "target", "up", "fov"});
+        scene.camera.eye = r.vector3(r.required(c, "camera", "eye"), "camera.eye");
+        scene.camera.target = r.vector3(r.required(c, "camera", "target"), "camera.target");
+        if (c.contains("up")) scene.camera.up = r.vector3(c["up"], "camera.up");
+        if (c.contains("fov")) scene.camera.fov_y_degrees = r.number(c["fov"], "camera.fov", 1e-3f, 179.0f);
+        scene.camera.given = true;
+    }
+    if (root.contains("film")) {
+        const json& f = root["film"];
+        r.keys(f, "film", {"width", "height"});
+        if (f.contains("width")) scene.settings.width = r.count(f["width"], "film.width", 1, 16384);
+        if (f.contains("height")) scene.settings.height = r.count(f["height"], "film.height", 1, 16384);
+    }
+    if (root.contains("render")) {
+        const json& s = root["render"];
+        r.keys(s, "render", {"spp", "max_depth", "min_depth"});
+        if (s.contains("spp")) scene.settings.spp = r.count(s["spp"], "render.spp", 1, 1u << 30);
+        if (s.contains("max_depth")) scene.settings.max_depth = r.count(s["max_depth"], "render.max_depth", 1, 100000);
+        if (s.contains("min_depth")) scene.settings.min_depth = r.count(s["min_depth"], "render.min_depth", 0, 100000);
+    }
+
+    std::map<std::string, uint32_t> textures;
+    if (root.contains("textures") && !root["textures"].is_object())
+        r.fail("textures", "expected an object of named textures");
+    if (root.contains("textures"))
+        for (const auto& [name, j] : root["textures"].items()) {
+            Texture t = read_texture(r, j, "textures." + name);
+            t.name = name;
+            scene.textures.push_back(std::move(t));
+            textures[name] = uint32_t(scene.textures.size() - 1);
+        }
+
+    std::map<std::string, uint32_t> materials;
+    if (root.contains("materials")) {
+        if (!root["materials"].is_object()) r.fail("materials", "expected an object of named materials");
+        for (const auto& [name, j] : root["materials"].items()) {
+            scene.materials.push_back(read_material(r, j, "materials." + name, textures));
+            scene.material_names.push_back(name);
+            materials[name] = uint32_t(scene.materials.size() - 1);
+        }
+    }
+
+    std::map<std::string, MeshRef> meshes;
+    if (root.contains("meshes")) {
+        if (!root["meshes"].is_object()) r.fail("meshes", "expected an object of named meshes");
+        for (const auto& [name, j] : root["meshes"].items()) {
+            if (!j.is_object()) r.fail("meshes." + name, "expected an object");
+            meshes[name] = read_mesh(r, j, "meshes." + name, scene, warnings);
+        }
+    }
+
+    if (!root.contains("objects") || !root["objects"].is_array() || root["objects"].empty())
+        r.fail("objects", "expected a non-empty array of objects");
+    const json& objects = root["objects"];
+    for (size_t i = 0; i < objects.size(); ++i) {
+        const std::string f = fmt::format("objects[{}]", i);
+        const json& o = objects[i];
+        r.keys(o, f, {"name", "mesh", "material", "transform"});
+        const std::string mesh_name = r.string(r.required(o, f, "mesh"), f + ".mesh");
+        auto mit = meshes.find(mesh_name);
+        if (mit == meshes.end()) r.fail(f + ".mesh", fmt::format("no mesh named '{}'", mesh_name));
+        uint32_t material = NO_INDEX;
+        if (o.contains("material")) {
+            const std::string mat = r.string(o["material"], f + ".material");
+            auto it = materials.find(mat);
+            if (it == materials.end()) r.fail(f + ".material", fmt::format("no material named '{}'", mat));
+            material = it->second;
+        }
+        const glm::mat4 xf = o.contains("transform") ? read_transform(r, o["transform"], f + ".transform") : glm::mat4(1.0f);
+        const double det = glm::determinant(glm::dmat3(xf));
+        if (!(std::abs(det) > 1e-30)) r.fail(f + ".transform", "is singular (zero scale?)");
+        for (const ObjPart& part : mit->second.parts) {
+            Object obj;
+            obj.name = o.contains("name") ? r.string(o["name"], f + ".name") : mesh_name;
+            obj.mesh = part.mesh;
+            obj.material = material != NO_INDEX ? material : part.material;
+            if (obj.material == NO_INDEX)
+                r.fail(f + ".material", fmt::format("mesh '{}' has no material of its own: name one", mesh_name));
+            obj.transform = xf;
+            scene.objects.push_back(obj);
+        }
+    }
+
+    if (root.contains("lights")) {
+        const json& lights = root["lights"];
+        if (!lights.is_array()) r.fail("lights", "expected an array");
+        for (size_t i = 0; i < lights.size(); ++i) {
+            const std::string f = fmt::format("lights[{}]", i);
+            const json& l = lights[i];
+            const std::string type = r.string(r.required(l, f, "type"), f + ".type");
+            Light light{};
+            if (type == "point") {
+                r.keys(l, f, {"type", "position", "intensity"});
+                light.type = LIGHT_POINT;
+                light.p0 = r.vector3(r.required(l, f, "position"), f + ".position");
+                light.value = r.color(r.required(l, f, "intensity"), f + ".intensity");
+            } else if (type == "directional") {
+                r.keys(l, f, {"type", "direction", "irradiance"});
+                light.type = LIGHT_DIRECTIONAL;
+                const vec3 d = r.vector3(r.required(l, f, "direction"), f + ".direction");
+                if (glm::length(d) == 0.0f) r.fail(f + ".direction", "must not be zero");
+                light.p0 = -glm::normalize(d); // stored towards the light
+                light.value = r.color(r.required(l, f, "irradiance"), f + ".irradiance");
+            } else {
+                r.fail(f + ".type", fmt::format("unknown light type '{}' (expected point, directional)", type));
+            }
+            scene.lights.push_back(light);
+        }
+    }
+
+    if (root.contains("environment")) {
+        const json& e = root["environment"];
+        const std::string type = r.string(r.required(e, "environment", "type"), "environment.type");
+        if (type == "constant") {
+            r.keys(e, "environment", {"type", "radiance"});
+            scene.environment.kind = EnvironmentKind::Constant;
+            scene.environment.radiance = r.color(r.required(e, "environment", "radiance"), "environment.radiance");
+        } else if (type == "map") {
+            r.keys(e, "environment", {"type", "file", "texture", "scale", "rotation"});
+            scene.environment.kind = EnvironmentKind::Map;
+            if (e.contains("file") == e.contains("texture"))
+                r.fail("environment", "a map needs exactly one of \"file\" and \"texture\"");
+            if (e.contains("file")) {
+                Texture t = load_texture(r.file_path(e["file"], "environment.file").string());
+                t.name = "environment";
+                scene.textures.push_back(std::move(t));
+                scene.environment.texture = int(scene.textures.size() - 1);
+            } else {
+                const std::string name = r.string(e["texture"], "environment.texture");
+                auto it = textures.find(name);
+                if (it == textures.end()) r.fail("environment.texture", fmt::format("no texture named '{}'", name));
+                scene.environment.texture = int(it->second);
+            }
+            scene.environment.radiance = e.contains("scale") ? vec3(r.number(e["scale"], "environment.scale", 0.0f, 1e30f)) : vec3(1.0f);
+            if (e.contains("rotation")) scene.environment.rotation_degrees = r.number(e["rotation"], "environment.rotation");
+        } else {
+            r.fail("environment.type", fmt::format("unknown environment type '{}' (expected constant, map)", type));
+        }
+    }
+    return scene;
+}
+
+} // namespace tp

@@ -1,0 +1,79 @@
+#include "scene/load.h"
+
+#include "scene/json_loader.h"
+#include "scene/obj_loader.h"
+#include "shared/math.h"
+#include "util/error.h"
+
+#include <cstdlib>
+#include <filesystem>
+
+namespace fs = std::filesystem;
+
+namespace tp {
+
+std::string bundled_scenes_dir() {
+    if (const char* env = std::getenv("TWINPATH_SCENES")) return env;
+    // Installed layouts: <prefix>/bin/twinpath with <prefix>/scenes (the GPU bundle), or the
+    // build tree, whose CMake configuration records the source directory.
+    std::error_code ec;
+    const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
+    if (!ec) {
+        for (const fs::path& p : {exe.parent_path() / "scenes", exe.parent_path().parent_path() / "scenes"})
+            if (fs::is_directory(p)) return p.string();
+    }
+    return TWINPATH_SOURCE_SCENES_DIR;
+}
+
+std::string resolve_scene_path(const std::string& arg) {
+    if (fs::exists(arg)) return arg;
+    const fs::path bundled = fs::path(bundled_scenes_dir()) / (arg + ".json");
+    if (arg.find('/') == std::string::npos && fs::exists(bundled)) return bundled.string();
+    input_error("{}: no such scene file or bundled scene (bundled scenes are in {})", arg,
+                bundled_scenes_dir());
+}
+
+namespace {
+
+Scene load_obj_scene(const std::string& path, std::vector<std::string>& warnings) {
+    Scene scene;
+    scene.path = path;
+    Material grey = default_material();
+    grey.kd = vec3(0.8f);
+    scene.materials.push_back(grey);
+    scene.material_names.push_back("default");
+    for (const ObjPart& part : load_obj(path, scene, 0, warnings)) {
+        Object o;
+        o.name = scene.meshes[part.mesh].name;
+        o.mesh = part.mesh;
+        o.material = part.material;
+        scene.objects.push_back(o);
+    }
+    bool emits = false;
+    for (const Object& o : scene.objects) emits = emits || max3(scene.materials[o.material].ke) > 0.0f;
+    if (!emits) {
+        scene.environment.kind = EnvironmentKind::Constant;
+        scene.environment.radiance = vec3(1.0f);
+        warnings.push_back(fmt::format("{}: no emissive material: lighting it with a constant white "
+                                       "environment of radiance 1",
+                                       path));
+    }
+    return scene; // camera.given stays false: flatten() frames the scene
+}
+
+} // namespace
+
+Scene load_scene(const std::string& path_or_name, std::vector<std::string>& warnings) {
+    const std::string path = resolve_scene_path(path_or_name);
+    const std::string ext = fs::path(path).extension().string();
+    Scene scene;
+    if (ext == ".json") scene = load_json_scene(path, warnings);
+    else if (ext == ".obj" || ext == ".OBJ") scene = load_obj_scene(path, warnings);
+    else input_error("{}: unknown scene format '{}' (expected .json or .obj)", path, ext);
+    if (scene.skipped_triangles > 0)
+        warnings.push_back(fmt::format("{}: skipped {} degenerate (zero-area) triangle(s)", path,
+                                       scene.skipped_triangles));
+    return scene;
+}
+
+} // namespace tp

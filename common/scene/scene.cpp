@@ -1,0 +1,86 @@
+#include "scene/scene.h"
+
+#include "shared/math.h"
+#include "util/error.h"
+
+#include <cmath>
+
+namespace tp {
+
+Material default_material() {
+    Material m{};
+    m.kd = vec3(0.0f);
+    m.kd_texture = NO_TEXTURE;
+    m.ks = vec3(0.0f);
+    m.ns = 1.0f;
+    m.ke = vec3(0.0f);
+    m.ior = 1.5f;
+    m.tf = vec3(1.0f);
+    m.type = MATERIAL_PHONG;
+    return m;
+}
+
+namespace {
+void check_color(const vec3& c, const std::string& where, const char* field) {
+    if (!is_finite3(c)) input_error("{}: {} must be finite, got ({}, {}, {})", where, field, c.x, c.y, c.z);
+    if (c.x < 0.0f || c.y < 0.0f || c.z < 0.0f)
+        input_error("{}: {} must not be negative, got ({}, {}, {})", where, field, c.x, c.y, c.z);
+}
+} // namespace
+
+void validate_material(const Material& m, const std::string& where) {
+    check_color(m.kd, where, "Kd");
+    check_color(m.ks, where, "Ks");
+    check_color(m.ke, where, "Ke");
+    check_color(m.tf, where, "Tf");
+    if (!std::isfinite(m.ns) || m.ns < 0.0f) input_error("{}: Ns must be finite and >= 0, got {}", where, m.ns);
+    if (!std::isfinite(m.ior) || m.ior <= 0.0f) input_error("{}: Ni must be finite and > 0, got {}", where, m.ior);
+    if (m.type == MATERIAL_PHONG) {
+        // Energy conservation of the modified Phong BRDF needs kd + ks <= 1 per channel
+        // (Lafortune & Willems 1994). A tolerance of 1e-6 absorbs decimal round-off in files.
+        for (int c = 0; c < 3; ++c)
+            if (m.kd[c] + m.ks[c] > 1.0f + 1e-6f)
+                input_error("{}: Kd + Ks must be <= 1 per channel for energy conservation, "
+                            "channel {} has {} + {}",
+                            where, "RGB"[c], m.kd[c], m.ks[c]);
+    }
+    if (m.type == MATERIAL_MIRROR && max3(m.ks) > 1.0f + 1e-6f)
+        input_error("{}: a mirror's Ks must be <= 1, got {}", where, max3(m.ks));
+}
+
+void finalize_mesh(Mesh& mesh, const std::string& where, uint64_t& skipped_triangles) {
+    const size_t nv = mesh.positions.size();
+    if (!mesh.normals.empty() && mesh.normals.size() != nv)
+        input_error("{}: {} normals for {} positions", where, mesh.normals.size(), nv);
+    if (!mesh.uvs.empty() && mesh.uvs.size() != nv)
+        input_error("{}: {} uvs for {} positions", where, mesh.uvs.size(), nv);
+    for (size_t i = 0; i < nv; ++i)
+        if (!is_finite3(mesh.positions[i]))
+            input_error("{}: vertex {} is not finite ({}, {}, {})", where, i, mesh.positions[i].x,
+                        mesh.positions[i].y, mesh.positions[i].z);
+    for (size_t i = 0; i < mesh.normals.size(); ++i)
+        if (!is_finite3(mesh.normals[i])) input_error("{}: normal {} is not finite", where, i);
+    for (size_t i = 0; i < mesh.uvs.size(); ++i)
+        if (!std::isfinite(mesh.uvs[i].x) || !std::isfinite(mesh.uvs[i].y))
+            input_error("{}: uv {} is not finite", where, i);
+
+    std::vector<uvec3> kept;
+    kept.reserve(mesh.triangles.size());
+    for (size_t t = 0; t < mesh.triangles.size(); ++t) {
+        const uvec3 tri = mesh.triangles[t];
+        for (int k = 0; k < 3; ++k)
+            if (tri[k] >= nv)
+                input_error("{}: triangle {} uses vertex {} but there are {}", where, t, tri[k], nv);
+        // Zero area in double precision: the triangle can never be hit, so it is skipped.
+        const glm::dvec3 a(mesh.positions[tri.x]), b(mesh.positions[tri.y]), c(mesh.positions[tri.z]);
+        const glm::dvec3 n = glm::cross(b - a, c - a);
+        if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0) {
+            ++skipped_triangles;
+            continue;
+        }
+        kept.push_back(tri);
+    }
+    mesh.triangles.swap(kept);
+}
+
+} // namespace tp

@@ -1,0 +1,51 @@
+// Line-oriented reader for OBJ and MTL: whitespace tokens, '#' comments, CRLF tolerated, and
+// errors that name the file and the line.
+#pragma once
+
+#include "shared/lang.h"
+#include "util/error.h"
+
+#include <fstream>
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tp {
+
+class LineReader {
+  public:
+    explicit LineReader(std::string path);
+
+    // Reads the next line that has tokens; false at the end of the file.
+    bool next(std::vector<std::string_view>& tokens);
+
+    size_t line() const { return line_no_; }
+    const std::string& path() const { return path_; }
+
+    template <typename... Args>
+    [[noreturn]] void fail(fmt::format_string<Args...> f, Args&&... args) const {
+        throw InputError(fmt::format("{}:{}: {}", path_, line_no_,
+                                     fmt::format(f, std::forward<Args>(args)...)));
+    }
+
+    // Strict conversions: the whole token must be a number.
+    float parse_number(std::string_view s) const;
+    long long parse_integer(std::string_view s) const;
+
+    float number(const std::vector<std::string_view>& tok, size_t i) const;
+    long long integer(const std::vector<std::string_view>& tok, size_t i) const;
+    vec3 vec3_at(const std::vector<std::string_view>& tok, size_t i) const;
+    // "K r g b" or the grey shorthand "K v".
+    vec3 color(const std::vector<std::string_view>& tok) const;
+    // The text of the current line after its first n tokens, trimmed (names with spaces).
+    std::string rest_after(size_t n) const;
+
+  private:
+    std::string path_;
+    std::ifstream file_;
+    std::string buffer_;
+    std::vector<std::string_view> tokens_;
+    size_t line_no_ = 0;
+};
+
+} // namespace tp

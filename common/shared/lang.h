@@ -1,0 +1,78 @@
+// Language bridge: the shared headers are written in the intersection of GLSL 4.60 and C++17.
+// In C++ the GLSL vocabulary (vec3, uint, dot, mix, ...) is aliased to GLM inside namespace tp;
+// in GLSL the C++-only words used by the headers are defined away.
+//
+// Rules for every file that includes this (DESIGN.md, "The shared headers"):
+// no templates, references, default arguments, enums, recursion or pointers; float literals
+// carry `f`, unsigned ones `u`; out/inout parameters through OUT()/INOUT(); every function pure.
+#ifndef TP_SHARED_LANG_H
+#define TP_SHARED_LANG_H
+
+#ifdef __cplusplus
+
+#include <cstddef>
+#include <cstdint>
+#include <glm/glm.hpp>
+
+namespace tp {
+using vec2 = glm::vec2;
+using vec3 = glm::vec3;
+using vec4 = glm::vec4;
+using ivec2 = glm::ivec2;
+using ivec3 = glm::ivec3;
+using uvec2 = glm::uvec2;
+using uvec3 = glm::uvec3;
+using uvec4 = glm::uvec4;
+using mat3 = glm::mat3;
+using uint = std::uint32_t;
+
+using glm::abs;
+using glm::acos;
+using glm::atan;
+using glm::clamp;
+using glm::cos;
+using glm::cross;
+using glm::dot;
+using glm::exp;
+using glm::exp2;
+using glm::floatBitsToInt;
+using glm::floatBitsToUint;
+using glm::floor;
+using glm::fract;
+using glm::intBitsToFloat;
+using glm::inversesqrt;
+using glm::isinf;
+using glm::isnan;
+using glm::length;
+using glm::log;
+using glm::log2;
+using glm::max;
+using glm::min;
+using glm::mix;
+using glm::normalize;
+using glm::pow;
+using glm::reflect;
+using glm::sign;
+using glm::sin;
+using glm::sqrt;
+using glm::tan;
+using glm::uintBitsToFloat;
+} // namespace tp
+
+#define TP_NAMESPACE_BEGIN namespace tp {
+#define TP_NAMESPACE_END }
+#define OUT(T) T&
+#define INOUT(T) T&
+
+#else // GLSL
+
+#define TP_NAMESPACE_BEGIN
+#define TP_NAMESPACE_END
+#define OUT(T) out T
+#define INOUT(T) inout T
+#define inline
+#define static
+
+#endif
+
+#endif // TP_SHARED_LANG_H
