@@ -40,7 +40,8 @@ uvec2 parse_pixel(const std::string& option, const std::string& text) {
         const std::string& p = parts[size_t(i)];
         const char* end = p.data() + p.size();
         auto [ptr, ec] = std::from_chars(p.data(), end, v[i]);
-        if (ec != std::errc() || ptr != end) input_error("{}: '{}' is not a pixel coordinate", option, p);
+        if (ec != std::errc() || ptr != end)
+            input_error("{}: '{}' is not a pixel coordinate", option, p);
     }
     return v;
 }

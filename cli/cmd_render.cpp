@@ -35,7 +35,8 @@ ExrImage render_image(const RenderResult& r) {
     ExrImage img = r.film.to_exr();
     img.integers["twinpath:spp"] = r.stats.spp;
     img.integers["twinpath:seed"] = r.stats.seed;
-    img.strings["twinpath:backend"] = r.stats.mode.empty() ? r.stats.backend : r.stats.backend + "/" + r.stats.mode;
+    img.strings["twinpath:backend"] =
+        r.stats.mode.empty() ? r.stats.backend : r.stats.backend + "/" + r.stats.mode;
     img.strings["twinpath:device"] = r.stats.device;
     img.strings["twinpath:scene"] = r.stats.scene;
     img.reals["twinpath:render_time_s"] = r.stats.wall_time_s;
@@ -61,9 +62,8 @@ int run_render(const RenderArgs& a) {
     apply_overrides(scene, o);
     const FlatScene flat = flatten(scene);
 
-    const std::string out = !a.output.empty()
-                                ? a.output
-                                : std::filesystem::path(scene.path).stem().string() + ".exr";
+    const std::string out =
+        !a.output.empty() ? a.output : std::filesystem::path(scene.path).stem().string() + ".exr";
 
     ProgressBar bar(fmt::format("render {}", a.backend));
     RenderOptions opt;
@@ -73,19 +73,23 @@ int run_render(const RenderArgs& a) {
     opt.progress = bar.callback();
 
     RenderResult result;
-    if (a.backend == "cpu") result = render_cpu(flat, opt);
-    else input_error("--backend vulkan: the Vulkan backend is not part of this build yet");
+    if (a.backend == "cpu")
+        result = render_cpu(flat, opt);
+    else
+        input_error("--backend vulkan: the Vulkan backend is not part of this build yet");
     result.stats.scene = scene.path;
 
     write_exr(out, render_image(result));
     if (!a.png.empty()) {
         const ExrImage img = result.film.to_exr();
-        write_png(a.png, img.width, img.height, tonemap_srgb8(img.channel("R"), img.channel("G"), img.channel("B"), 0.0f));
+        write_png(a.png, img.width, img.height,
+                  tonemap_srgb8(img.channel("R"), img.channel("G"), img.channel("B"), 0.0f));
     }
     if (!a.stats.empty()) write_stats_json(a.stats, result.stats);
     const RenderStats& s = result.stats;
-    fmt::print("{}: {}x{} {} spp on {} in {:.2f} s ({:.2f} Mrays/s), {} NaN/Inf samples -> {}\n", scene.path,
-               s.width, s.height, s.spp, s.device, s.wall_time_s, s.rays_per_second() * 1e-6, s.nan_samples, out);
+    fmt::print("{}: {}x{} {} spp on {} in {:.2f} s ({:.2f} Mrays/s), {} NaN/Inf samples -> {}\n",
+               scene.path, s.width, s.height, s.spp, s.device, s.wall_time_s,
+               s.rays_per_second() * 1e-6, s.nan_samples, out);
     return 0;
 }
 
@@ -93,25 +97,31 @@ int run_render(const RenderArgs& a) {
 
 Subcommand add_render_command(CLI::App& app) {
     auto a = std::make_shared<RenderArgs>();
-    CLI::App* c = app.add_subcommand("render", "Render a scene (.json, .obj or a bundled scene name) to OpenEXR");
+    CLI::App* c = app.add_subcommand(
+        "render", "Render a scene (.json, .obj or a bundled scene name) to OpenEXR");
     c->add_option("scene", a->scene, "Scene file or bundled scene name")->required();
     c->add_option("-o,--output", a->output, "Output OpenEXR file (default: <scene>.exr)");
-    c->add_option("--backend", a->backend, "cpu or vulkan")->check(CLI::IsMember({"cpu", "vulkan"}));
-    c->add_option("--vk-mode", a->vk_mode, "Vulkan mode")->check(CLI::IsMember({"auto", "compute", "pipeline"}));
+    c->add_option("--backend", a->backend, "cpu or vulkan")
+        ->check(CLI::IsMember({"cpu", "vulkan"}));
+    c->add_option("--vk-mode", a->vk_mode, "Vulkan mode")
+        ->check(CLI::IsMember({"auto", "compute", "pipeline"}));
     c->add_option("--spp", a->spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 30));
     c->add_option("--time-limit", a->time_limit, "Stop after this many seconds (whole passes)")
         ->check(CLI::Range(0.0, 1e9));
     c->add_option("--seed", a->seed, "Random seed");
     c->add_option("--width", a->width, "Image width")->check(CLI::Range(1u, 16384u));
     c->add_option("--height", a->height, "Image height")->check(CLI::Range(1u, 16384u));
-    c->add_option("--min-depth", a->min_depth, "Bounces before Russian roulette")->check(CLI::Range(0u, 100000u));
-    c->add_option("--max-depth", a->max_depth, "Maximum scattering events")->check(CLI::Range(1u, 100000u));
+    c->add_option("--min-depth", a->min_depth, "Bounces before Russian roulette")
+        ->check(CLI::Range(0u, 100000u));
+    c->add_option("--max-depth", a->max_depth, "Maximum scattering events")
+        ->check(CLI::Range(1u, 100000u));
     c->add_option("--threads", a->threads, "CPU threads (0: all)")->check(CLI::Range(0u, 4096u));
     c->add_option("--device", a->device, "Vulkan device index or name substring");
     c->add_option("--eye", a->eye, "Camera position X,Y,Z");
     c->add_option("--target", a->target, "Camera target X,Y,Z");
     c->add_option("--up", a->up, "Camera up vector X,Y,Z");
-    c->add_option("--fov", a->fov, "Vertical field of view in degrees")->check(CLI::Range(1e-3f, 179.0f));
+    c->add_option("--fov", a->fov, "Vertical field of view in degrees")
+        ->check(CLI::Range(1e-3f, 179.0f));
     c->add_option("--stats", a->stats, "Write render statistics as JSON");
     c->add_option("--png", a->png, "Write a tone-mapped sRGB PNG preview");
     return {c, [a] { return run_render(*a); }};

@@ -8,7 +8,8 @@
 namespace tp {
 
 ProgressBar::ProgressBar(std::string label)
-    : label_(std::move(label)), enabled_(isatty(STDERR_FILENO) == 1), start_(std::chrono::steady_clock::now()) {}
+    : label_(std::move(label)), enabled_(isatty(STDERR_FILENO) == 1),
+      start_(std::chrono::steady_clock::now()) {}
 
 ProgressBar::~ProgressBar() {
     if (drawn_) fmt::print(stderr, "\n");
@@ -17,9 +18,11 @@ ProgressBar::~ProgressBar() {
 void ProgressBar::update(double fraction) {
     if (!enabled_) return;
     fraction = std::clamp(fraction, 0.0, 1.0);
-    const double elapsed = std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double elapsed =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
     const int width = 30, filled = int(fraction * width + 0.5);
-    const std::string eta = fraction > 0 ? fmt::format("{:.0f}s left", elapsed * (1 - fraction) / fraction) : "";
+    const std::string eta =
+        fraction > 0 ? fmt::format("{:.0f}s left", elapsed * (1 - fraction) / fraction) : "";
     fmt::print(stderr, "\r{} [{}{}] {:3.0f}% {:.1f}s {}   ", label_, std::string(filled, '#'),
                std::string(width - filled, '.'), 100 * fraction, elapsed, eta);
     std::fflush(stderr);

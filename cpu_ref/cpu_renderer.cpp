@@ -35,7 +35,8 @@ struct TileCounters {
 
 RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
     std::optional<tbb::global_control> limit;
-    if (options.threads > 0) limit.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
+    if (options.threads > 0)
+        limit.emplace(tbb::global_control::max_allowed_parallelism, options.threads);
 
     RenderResult result;
     RenderStats& st = result.stats;
@@ -44,7 +45,8 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
     st.device = "CPU (Embree 3, TBB)";
     st.scene = scene.name;
     st.seed = options.seed;
-    st.threads = uint32_t(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
+    st.threads =
+        uint32_t(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
 
     FlatScene seeded = scene;
     seeded.params.seed = options.seed;
@@ -60,29 +62,32 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
     st.width = W;
     st.height = H;
     const uint32_t tiles_x = (W + kTile - 1) / kTile, tiles_y = (H + kTile - 1) / kTile;
-    const uint32_t pass_spp = uint32_t(std::clamp<uint64_t>(kSamplesPerPass / (uint64_t(W) * H), 1, 1024));
+    const uint32_t pass_spp =
+        uint32_t(std::clamp<uint64_t>(kSamplesPerPass / (uint64_t(W) * H), 1, 1024));
 
     const auto t0 = std::chrono::steady_clock::now();
     uint32_t done = 0;
     while (done < scene.spp) {
         const uint32_t s0 = done, s1 = std::min(scene.spp, done + pass_spp);
         tbb::combinable<TileCounters> counters;
-        tbb::parallel_for(tbb::blocked_range<uint32_t>(0, tiles_x * tiles_y), [&](const tbb::blocked_range<uint32_t>& r) {
-            TileCounters& c = counters.local();
-            for (uint32_t tile = r.begin(); tile != r.end(); ++tile) {
-                const uint32_t x0 = (tile % tiles_x) * kTile, y0 = (tile / tiles_x) * kTile;
-                for (uint32_t y = y0; y < std::min(y0 + kTile, H); ++y)
-                    for (uint32_t x = x0; x < std::min(x0 + kTile, W); ++x)
-                        for (uint32_t s = s0; s < s1; ++s) {
-                            const vec3 L = integrator.radiance(x, y, s, c.rays);
-                            if (!is_finite3(L)) {
-                                ++c.nan; // counted and dropped (DESIGN.md, "No silent NaN")
-                                continue;
+        tbb::parallel_for(
+            tbb::blocked_range<uint32_t>(0, tiles_x * tiles_y),
+            [&](const tbb::blocked_range<uint32_t>& r) {
+                TileCounters& c = counters.local();
+                for (uint32_t tile = r.begin(); tile != r.end(); ++tile) {
+                    const uint32_t x0 = (tile % tiles_x) * kTile, y0 = (tile / tiles_x) * kTile;
+                    for (uint32_t y = y0; y < std::min(y0 + kTile, H); ++y)
+                        for (uint32_t x = x0; x < std::min(x0 + kTile, W); ++x)
+                            for (uint32_t s = s0; s < s1; ++s) {
+                                const vec3 L = integrator.radiance(x, y, s, c.rays);
+                                if (!is_finite3(L)) {
+                                    ++c.nan; // counted and dropped (DESIGN.md, "No silent NaN")
+                                    continue;
+                                }
+                                result.film.add_sample(y * W + x, glm::dvec3(L));
                             }
-                            result.film.add_sample(y * W + x, glm::dvec3(L));
-                        }
-            }
-        });
+                }
+            });
         counters.combine_each([&](const TileCounters& c) {
             st.rays += c.rays;
             st.nan_samples += c.nan;

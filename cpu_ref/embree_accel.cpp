@@ -11,13 +11,20 @@ namespace tp {
 namespace {
 const char* embree_error_name(RTCError e) {
     switch (e) {
-    case RTC_ERROR_NONE: return "none";
-    case RTC_ERROR_INVALID_ARGUMENT: return "invalid argument";
-    case RTC_ERROR_INVALID_OPERATION: return "invalid operation";
-    case RTC_ERROR_OUT_OF_MEMORY: return "out of memory";
-    case RTC_ERROR_UNSUPPORTED_CPU: return "unsupported CPU";
-    case RTC_ERROR_CANCELLED: return "cancelled";
-    default: return "unknown error";
+    case RTC_ERROR_NONE:
+        return "none";
+    case RTC_ERROR_INVALID_ARGUMENT:
+        return "invalid argument";
+    case RTC_ERROR_INVALID_OPERATION:
+        return "invalid operation";
+    case RTC_ERROR_OUT_OF_MEMORY:
+        return "out of memory";
+    case RTC_ERROR_UNSUPPORTED_CPU:
+        return "unsupported CPU";
+    case RTC_ERROR_CANCELLED:
+        return "cancelled";
+    default:
+        return "unknown error";
     }
 }
 
@@ -34,12 +41,15 @@ bool EmbreeAccel::monitor(void* self, ssize_t bytes, bool) {
 void EmbreeAccel::check(const char* what) const {
     const RTCError e = rtcGetDeviceError(device_);
     if (e == RTC_ERROR_OUT_OF_MEMORY) runtime_error("Embree ran out of memory while {}", what);
-    if (e != RTC_ERROR_NONE) runtime_error("Embree failed while {}: {}", what, embree_error_name(e));
+    if (e != RTC_ERROR_NONE)
+        runtime_error("Embree failed while {}: {}", what, embree_error_name(e));
 }
 
 EmbreeAccel::EmbreeAccel(const FlatScene& scene) {
     device_ = rtcNewDevice(nullptr);
-    if (!device_) runtime_error("cannot create an Embree device: {}", embree_error_name(rtcGetDeviceError(nullptr)));
+    if (!device_)
+        runtime_error("cannot create an Embree device: {}",
+                      embree_error_name(rtcGetDeviceError(nullptr)));
     rtcSetDeviceMemoryMonitorFunction(device_, &EmbreeAccel::monitor, this);
 
     for (const MeshInfo& m : scene.meshes) {
@@ -50,10 +60,10 @@ EmbreeAccel::EmbreeAccel(const FlatScene& scene) {
         RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
         // New (Embree-owned, padded) buffers: a shared vec3 array would be read 4 bytes past
         // its end by Embree's 16-byte vertex loads.
-        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
-                                                              3 * sizeof(float), m.vertex_count));
-        auto* i = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3,
-                                                                 3 * sizeof(uint32_t), m.triangle_count));
+        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
+            g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), m.vertex_count));
+        auto* i = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
+            g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), m.triangle_count));
         check("allocating mesh buffers");
         std::memcpy(v, &scene.positions[m.first_vertex], sizeof(vec3) * m.vertex_count);
         std::memcpy(i, &scene.triangles[m.first_triangle], sizeof(uvec3) * m.triangle_count);
@@ -71,9 +81,10 @@ EmbreeAccel::EmbreeAccel(const FlatScene& scene) {
         const Instance& inst = scene.instances[k];
         RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
         rtcSetGeometryInstancedScene(g, meshes_[inst.mesh]);
-        const float rows[12] = {inst.to_world0.x, inst.to_world0.y, inst.to_world0.z, inst.to_world0.w,
-                                inst.to_world1.x, inst.to_world1.y, inst.to_world1.z, inst.to_world1.w,
-                                inst.to_world2.x, inst.to_world2.y, inst.to_world2.z, inst.to_world2.w};
+        const float rows[12] = {inst.to_world0.x, inst.to_world0.y, inst.to_world0.z,
+                                inst.to_world0.w, inst.to_world1.x, inst.to_world1.y,
+                                inst.to_world1.z, inst.to_world1.w, inst.to_world2.x,
+                                inst.to_world2.y, inst.to_world2.z, inst.to_world2.w};
         rtcSetGeometryTransform(g, 0, RTC_FORMAT_FLOAT3X4_ROW_MAJOR, rows);
         rtcCommitGeometry(g);
         rtcAttachGeometryByID(top_, g, k);

@@ -14,7 +14,8 @@ vec3 CpuIntegrator::radiance(uint32_t x, uint32_t y, uint32_t sample_index, RayC
 
     Ray ray;
     ray.origin = P.camera.eye;
-    ray.dir = camera_direction(P.camera, float(x) + rng_get(key, RNG_PIXEL_X), float(y) + rng_get(key, RNG_PIXEL_Y));
+    ray.dir = camera_direction(P.camera, float(x) + rng_get(key, RNG_PIXEL_X),
+                               float(y) + rng_get(key, RNG_PIXEL_Y));
     ray.tmax = FLOAT_MAX;
     ++rays.camera;
 
@@ -25,8 +26,10 @@ vec3 CpuIntegrator::radiance(uint32_t x, uint32_t y, uint32_t sample_index, RayC
         const Hit hit = accel_.intersect(ray);
         if (!hit.found) {
             if (P.env_light != NO_INDEX) {
-                const float light_pdf = access_.light_selection_pdf(P.env_light) * access_.environment_pdf(ray.dir);
-                L += T * access_.environment_radiance(ray.dir) * emission_mis_weight(prev_specular, prev_pdf, light_pdf);
+                const float light_pdf =
+                    access_.light_selection_pdf(P.env_light) * access_.environment_pdf(ray.dir);
+                L += T * access_.environment_radiance(ray.dir) *
+                     emission_mis_weight(prev_specular, prev_pdf, light_pdf);
             }
             break;
         }
@@ -41,7 +44,8 @@ vec3 CpuIntegrator::radiance(uint32_t x, uint32_t y, uint32_t sample_index, RayC
             float light_pdf = 0.0f;
             if (inst.light_offset != NO_INDEX) {
                 const uint32_t li = inst.light_offset + hit.primitive;
-                light_pdf = access_.light_selection_pdf(li) * triangle_light_pdf(access_.light(li).area, hit.t, cos_emit);
+                light_pdf = access_.light_selection_pdf(li) *
+                            triangle_light_pdf(access_.light(li).area, hit.t, cos_emit);
             }
             L += T * mat.ke * emission_mis_weight(prev_specular, prev_pdf, light_pdf);
         }
@@ -52,33 +56,41 @@ vec3 CpuIntegrator::radiance(uint32_t x, uint32_t y, uint32_t sample_index, RayC
 
         // 3. Next-event estimation.
         if (!material_is_delta(mat) && P.light_count > 0) {
-            const uint32_t slot = alias_slot(rng_bounce(key, bounce, RNG_LIGHT_SLOT), P.light_count);
+            const uint32_t slot =
+                alias_slot(rng_bounce(key, bounce, RNG_LIGHT_SLOT), P.light_count);
             const AliasEntry& e = s.light_table[slot];
-            const uint32_t li = alias_resolve(slot, e.prob, e.alias, rng_bounce(key, bounce, RNG_LIGHT_COIN));
+            const uint32_t li =
+                alias_resolve(slot, e.prob, e.alias, rng_bounce(key, bounce, RNG_LIGHT_COIN));
             const float sel_pdf = access_.light_selection_pdf(li);
-            const vec2 u(rng_bounce(key, bounce, RNG_LIGHT_U), rng_bounce(key, bounce, RNG_LIGHT_V));
-            const LightSample ls = access_.sample(li, sp.p, u, rng_bounce(key, bounce, RNG_ENV_SLOT),
-                                                  rng_bounce(key, bounce, RNG_ENV_COIN));
+            const vec2 u(rng_bounce(key, bounce, RNG_LIGHT_U),
+                         rng_bounce(key, bounce, RNG_LIGHT_V));
+            const LightSample ls =
+                access_.sample(li, sp.p, u, rng_bounce(key, bounce, RNG_ENV_SLOT),
+                               rng_bounce(key, bounce, RNG_ENV_COIN));
             if (ls.pdf > 0.0f && dot(ls.wi, sp.ng) > 0.0f) {
                 const vec3 f = bsdf_eval(mat, sp.ns, wo, ls.wi);
                 if (!is_black(f) && !is_black(ls.radiance)) {
                     const float light_pdf = sel_pdf * ls.pdf;
                     vec3 contrib = T * f * (dot(sp.ns, ls.wi) / light_pdf) * ls.radiance;
-                    if (!ls.delta) contrib *= power_heuristic(light_pdf, bsdf_pdf(mat, sp.ns, wo, ls.wi));
+                    if (!ls.delta)
+                        contrib *= power_heuristic(light_pdf, bsdf_pdf(mat, sp.ns, wo, ls.wi));
                     ++rays.shadow;
-                    if (!accel_.occluded(shadow_ray(sp.p, sp.ng, ls, access_.light(li)))) L += contrib;
+                    if (!accel_.occluded(shadow_ray(sp.p, sp.ng, ls, access_.light(li))))
+                        L += contrib;
                 }
             }
         }
 
         // 4. Scattering.
-        const BsdfSample bs = bsdf_sample(mat, sp.ns, wo, rng_bounce(key, bounce, RNG_LOBE),
-                                          vec2(rng_bounce(key, bounce, RNG_DIR_U), rng_bounce(key, bounce, RNG_DIR_V)));
+        const BsdfSample bs = bsdf_sample(
+            mat, sp.ns, wo, rng_bounce(key, bounce, RNG_LOBE),
+            vec2(rng_bounce(key, bounce, RNG_DIR_U), rng_bounce(key, bounce, RNG_DIR_V)));
         if (bs.lobe == LOBE_NONE || !scatter_is_consistent(sp.ng, wo, bs.wi, bs.lobe)) break;
         T *= bs.weight;
         prev_specular = (bs.lobe & LOBE_SPECULAR) != 0u;
         prev_pdf = bs.pdf;
-        if (!roulette_apply(T, bounce + 1, P.min_depth, rng_bounce(key, bounce, RNG_ROULETTE))) break;
+        if (!roulette_apply(T, bounce + 1, P.min_depth, rng_bounce(key, bounce, RNG_ROULETTE)))
+            break;
         ray = spawn_ray(sp.p, sp.ng, bs.wi);
         ++rays.extension;
     }

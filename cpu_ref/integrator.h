@@ -10,7 +10,8 @@ namespace tp {
 
 class CpuIntegrator {
   public:
-    CpuIntegrator(const FlatScene& scene, const EmbreeAccel& accel) : access_(scene), accel_(accel) {}
+    CpuIntegrator(const FlatScene& scene, const EmbreeAccel& accel)
+        : access_(scene), accel_(accel) {}
 
     // Radiance estimate of sample `sample_index` of pixel (x, y); rays are counted into `rays`.
     vec3 radiance(uint32_t x, uint32_t y, uint32_t sample_index, RayCounts& rays) const;

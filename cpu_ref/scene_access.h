@@ -28,7 +28,8 @@ class SceneAccess {
             surface_set_shading_normal(sp, inst, s_.normals[base + t.x], s_.normals[base + t.y],
                                        s_.normals[base + t.z], h.bary);
         if (m.flags & MESH_HAS_UVS)
-            sp.uv = barycentric_mix2(s_.uvs[base + t.x], s_.uvs[base + t.y], s_.uvs[base + t.z], h.bary);
+            sp.uv = barycentric_mix2(s_.uvs[base + t.x], s_.uvs[base + t.y], s_.uvs[base + t.z],
+                                     h.bary);
         return sp;
     }
 
@@ -53,7 +54,8 @@ class SceneAccess {
     vec3 environment_radiance(vec3 d) const {
         const Light& env = s_.lights[s_.params.env_light];
         if (s_.params.env_texture == NO_TEXTURE) return env.value;
-        return env.value * texture(s_.params.env_texture, environment_map_coords(d, s_.params.env_rotation), true);
+        return env.value * texture(s_.params.env_texture,
+                                   environment_map_coords(d, s_.params.env_rotation), true);
     }
 
     // Solid-angle density with which light sampling picks direction d from the environment,
@@ -64,20 +66,22 @@ class SceneAccess {
         const TextureInfo& info = s_.textures[size_t(s_.params.env_texture)];
         const vec2 st = environment_map_coords(d, s_.params.env_rotation);
         const uint32_t pixel = environment_map_pixel(st, info.width, info.height);
-        return environment_map_pdf(s_.env_table[pixel].pdf, info.width, info.height, sin(st.y * PI));
+        return environment_map_pdf(s_.env_table[pixel].pdf, info.width, info.height,
+                                   sin(st.y * PI));
     }
 
     // Samples light `i` from point p; the environment map's pixel is drawn with slot/coin.
     LightSample sample(uint32_t i, vec3 p, vec2 u, float env_slot, float env_coin) const {
         const Light& l = s_.lights[i];
-        if (l.type != LIGHT_ENVIRONMENT || s_.params.env_texture == NO_TEXTURE) return sample_light(l, p, u);
+        if (l.type != LIGHT_ENVIRONMENT || s_.params.env_texture == NO_TEXTURE)
+            return sample_light(l, p, u);
         if (s_.env_table.empty()) return light_sample_none();
         const TextureInfo& info = s_.textures[size_t(s_.params.env_texture)];
         const uint32_t slot = alias_slot(env_slot, uint32_t(s_.env_table.size()));
         const AliasEntry& e = s_.env_table[slot];
         const uint32_t pixel = alias_resolve(slot, e.prob, e.alias, env_coin);
-        LightSample ls = sample_environment_map(pixel, s_.env_table[pixel].pdf, info.width, info.height,
-                                                s_.params.env_rotation, u);
+        LightSample ls = sample_environment_map(pixel, s_.env_table[pixel].pdf, info.width,
+                                                info.height, s_.params.env_rotation, u);
         if (ls.pdf > 0.0f) ls.radiance = environment_radiance(ls.wi);
         return ls;
     }

@@ -72,18 +72,24 @@ ExrImage read_exr(const std::string& path) {
             auto& data = image.channels[it.name()];
             data.resize(n);
             // The slice base is offset so that data window pixel (min.x, min.y) lands at 0.
-            char* base = (char*)data.data() -
-                         (ptrdiff_t(dw.min.x) + ptrdiff_t(dw.min.y) * image.width) * ptrdiff_t(sizeof(float));
-            fb.insert(it.name(), Imf::Slice(Imf::FLOAT, base, sizeof(float), sizeof(float) * size_t(image.width)));
+            char* base =
+                (char*)data.data() - (ptrdiff_t(dw.min.x) + ptrdiff_t(dw.min.y) * image.width) *
+                                         ptrdiff_t(sizeof(float));
+            fb.insert(it.name(), Imf::Slice(Imf::FLOAT, base, sizeof(float),
+                                            sizeof(float) * size_t(image.width)));
         }
         file.setFrameBuffer(fb);
         file.readPixels(dw.min.y, dw.max.y);
         for (auto it = header.begin(); it != header.end(); ++it) {
             const Imf::Attribute& a = it.attribute();
-            if (auto* s = dynamic_cast<const Imf::StringAttribute*>(&a)) image.strings[it.name()] = s->value();
-            else if (auto* i = dynamic_cast<const Imf::IntAttribute*>(&a)) image.integers[it.name()] = i->value();
-            else if (auto* d = dynamic_cast<const Imf::DoubleAttribute*>(&a)) image.reals[it.name()] = d->value();
-            else if (auto* f = dynamic_cast<const Imf::FloatAttribute*>(&a)) image.reals[it.name()] = f->value();
+            if (auto* s = dynamic_cast<const Imf::StringAttribute*>(&a))
+                image.strings[it.name()] = s->value();
+            else if (auto* i = dynamic_cast<const Imf::IntAttribute*>(&a))
+                image.integers[it.name()] = i->value();
+            else if (auto* d = dynamic_cast<const Imf::DoubleAttribute*>(&a))
+                image.reals[it.name()] = d->value();
+            else if (auto* f = dynamic_cast<const Imf::FloatAttribute*>(&a))
+                image.reals[it.name()] = f->value();
         }
     } catch (const std::exception& e) {
         input_error("{}: not a readable OpenEXR image: {}", path, e.what());

@@ -15,8 +15,8 @@ struct ExrImage {
     int height = 0;
     std::map<std::string, std::vector<float>> channels; // row-major, top row first
     std::map<std::string, std::string> strings;         // string header attributes
-    std::map<std::string, int64_t> integers;             // int header attributes
-    std::map<std::string, double> reals;                 // double header attributes
+    std::map<std::string, int64_t> integers;            // int header attributes
+    std::map<std::string, double> reals;                // double header attributes
 
     bool has(const std::string& channel) const { return channels.count(channel) != 0; }
     const std::vector<float>& channel(const std::string& name) const;

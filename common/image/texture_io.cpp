@@ -64,7 +64,8 @@ Texture load_texture(const std::string& path) {
     t = from_exr(path);
 #endif
     for (const vec3& c : t.texels)
-        if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z) || c.x < 0 || c.y < 0 || c.z < 0)
+        if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z) || c.x < 0 ||
+            c.y < 0 || c.z < 0)
             input_error("{}: texture has negative or non-finite texels", path);
     return t;
 }

@@ -4,7 +4,8 @@ namespace tp {
 
 Film::Film(uint32_t width, uint32_t height)
     : width_(width), height_(height), count_(size_t(width) * height, 0),
-      mean_(size_t(width) * height, glm::dvec3(0.0)), m2_(size_t(width) * height, glm::dvec3(0.0)) {}
+      mean_(size_t(width) * height, glm::dvec3(0.0)), m2_(size_t(width) * height, glm::dvec3(0.0)) {
+}
 
 void Film::add_sample(uint32_t p, const glm::dvec3& x) {
     const uint64_t n = ++count_[p];

@@ -39,7 +39,9 @@ struct RenderStats {
     uint64_t accel_bytes = 0; // BVH / acceleration structure memory
     std::map<std::string, std::string> extra;
 
-    double rays_per_second() const { return wall_time_s > 0 ? double(rays.total()) / wall_time_s : 0.0; }
+    double rays_per_second() const {
+        return wall_time_s > 0 ? double(rays.total()) / wall_time_s : 0.0;
+    }
 };
 
 void write_stats_json(const std::string& path, const RenderStats& s);

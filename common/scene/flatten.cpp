@@ -76,13 +76,18 @@ FlatScene flatten(const Scene& scene) {
         info.first_vertex = uint32_t(f.positions.size());
         info.triangle_count = uint32_t(m.triangles.size());
         info.vertex_count = uint32_t(m.positions.size());
-        info.flags = (m.normals.empty() ? 0u : MESH_HAS_NORMALS) | (m.uvs.empty() ? 0u : MESH_HAS_UVS);
+        info.flags =
+            (m.normals.empty() ? 0u : MESH_HAS_NORMALS) | (m.uvs.empty() ? 0u : MESH_HAS_UVS);
         info.bvh_root = NO_INDEX;
         f.positions.insert(f.positions.end(), m.positions.begin(), m.positions.end());
-        if (m.normals.empty()) f.normals.resize(f.positions.size(), vec3(0.0f));
-        else f.normals.insert(f.normals.end(), m.normals.begin(), m.normals.end());
-        if (m.uvs.empty()) f.uvs.resize(f.positions.size(), vec2(0.0f));
-        else f.uvs.insert(f.uvs.end(), m.uvs.begin(), m.uvs.end());
+        if (m.normals.empty())
+            f.normals.resize(f.positions.size(), vec3(0.0f));
+        else
+            f.normals.insert(f.normals.end(), m.normals.begin(), m.normals.end());
+        if (m.uvs.empty())
+            f.uvs.resize(f.positions.size(), vec2(0.0f));
+        else
+            f.uvs.insert(f.uvs.end(), m.uvs.begin(), m.uvs.end());
         f.triangles.insert(f.triangles.end(), m.triangles.begin(), m.triangles.end());
         f.unique_triangles += m.triangles.size();
         mesh_slot[o.mesh] = uint32_t(f.meshes.size());
@@ -95,7 +100,8 @@ FlatScene flatten(const Scene& scene) {
     for (const Object& o : scene.objects) {
         Instance inst{};
         store_rows(o.transform, inst.to_world0, inst.to_world1, inst.to_world2);
-        store_rows(glm::affineInverse(o.transform), inst.to_object0, inst.to_object1, inst.to_object2);
+        store_rows(glm::affineInverse(o.transform), inst.to_object0, inst.to_object1,
+                   inst.to_object2);
         inst.mesh = mesh_slot.at(o.mesh);
         inst.material = o.material;
         inst.light_offset = NO_INDEX;
@@ -199,8 +205,10 @@ FlatScene flatten(const Scene& scene) {
 
     double total = 0.0;
     for (double w : weights) total += w;
-    if (total > 0.0) f.light_table = build_alias_table(weights);
-    else f.lights.clear(); // nothing emits: no next-event estimation at all
+    if (total > 0.0)
+        f.light_table = build_alias_table(weights);
+    else
+        f.lights.clear(); // nothing emits: no next-event estimation at all
     if (f.lights.empty()) {
         f.params.env_light = NO_INDEX;
         for (Instance& inst : f.instances) inst.light_offset = NO_INDEX;

@@ -29,8 +29,8 @@ struct FlatScene {
     std::vector<Material> materials;
     std::vector<MeshInfo> meshes;
     std::vector<vec3> positions;
-    std::vector<vec3> normals; // parallel to positions (zero where a mesh has none)
-    std::vector<vec2> uvs;     // parallel to positions (zero where a mesh has none)
+    std::vector<vec3> normals;    // parallel to positions (zero where a mesh has none)
+    std::vector<vec2> uvs;        // parallel to positions (zero where a mesh has none)
     std::vector<uvec3> triangles; // mesh-local vertex indices
     std::vector<Instance> instances;
     std::vector<std::string> instance_names;
@@ -42,10 +42,12 @@ struct FlatScene {
     std::vector<AliasEntry> env_table; // environment-map pixels, when there is a map
 
     vec3 bounds_min{0.0f}, bounds_max{0.0f}; // world-space bounding box
-    uint64_t instanced_triangles = 0;         // triangles as rendered (instances counted)
-    uint64_t unique_triangles = 0;            // triangles stored
+    uint64_t instanced_triangles = 0;        // triangles as rendered (instances counted)
+    uint64_t unique_triangles = 0;           // triangles stored
 
-    const Material& material_of(uint32_t instance) const { return materials[instances[instance].material]; }
+    const Material& material_of(uint32_t instance) const {
+        return materials[instances[instance].material];
+    }
 };
 
 // Throws InputError for an impossible camera or film.

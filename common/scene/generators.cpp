@@ -17,9 +17,9 @@ Mesh make_icosphere(uint32_t subdivisions, bool inward) {
     // The 12 vertices (0, +-1, +-phi) and cyclic permutations; 20 faces counter-clockwise seen
     // from outside.
     const float t = (1.0f + std::sqrt(5.0f)) / 2.0f;
-    std::vector<vec3> v = {{-1, t, 0}, {1, t, 0},  {-1, -t, 0}, {1, -t, 0},
-                           {0, -1, t}, {0, 1, t},  {0, -1, -t}, {0, 1, -t},
-                           {t, 0, -1}, {t, 0, 1},  {-t, 0, -1}, {-t, 0, 1}};
+    std::vector<vec3> v = {{-1, t, 0}, {1, t, 0}, {-1, -t, 0}, {1, -t, 0},
+                           {0, -1, t}, {0, 1, t}, {0, -1, -t}, {0, 1, -t},
+                           {t, 0, -1}, {t, 0, 1}, {-t, 0, -1}, {-t, 0, 1}};
     std::vector<uvec3> f = {{0, 11, 5}, {0, 5, 1},  {0, 1, 7},   {0, 7, 10}, {0, 10, 11},
                             {1, 5, 9},  {5, 11, 4}, {11, 10, 2}, {10, 7, 6}, {7, 1, 8},
                             {3, 9, 4},  {3, 4, 2},  {3, 2, 6},   {3, 6, 8},  {3, 8, 9},
@@ -75,12 +75,12 @@ Mesh make_box() {
     m.name = "box";
     // Each face: a corner and two edge directions whose cross product points outwards.
     const std::array<std::array<vec3, 3>, 6> faces = {{
-        {{{1, -1, 1}, {0, 0, -2}, {0, 2, 0}}},   // +X
-        {{{-1, -1, -1}, {0, 0, 2}, {0, 2, 0}}},  // -X
-        {{{-1, 1, 1}, {2, 0, 0}, {0, 0, -2}}},   // +Y
-        {{{-1, -1, -1}, {2, 0, 0}, {0, 0, 2}}},  // -Y
-        {{{-1, -1, 1}, {2, 0, 0}, {0, 2, 0}}},   // +Z
-        {{{1, -1, -1}, {-2, 0, 0}, {0, 2, 0}}},  // -Z
+        {{{1, -1, 1}, {0, 0, -2}, {0, 2, 0}}},  // +X
+        {{{-1, -1, -1}, {0, 0, 2}, {0, 2, 0}}}, // -X
+        {{{-1, 1, 1}, {2, 0, 0}, {0, 0, -2}}},  // +Y
+        {{{-1, -1, -1}, {2, 0, 0}, {0, 0, 2}}}, // -Y
+        {{{-1, -1, 1}, {2, 0, 0}, {0, 2, 0}}},  // +Z
+        {{{1, -1, -1}, {-2, 0, 0}, {0, 2, 0}}}, // -Z
     }};
     for (const auto& face : faces) {
         const uint32_t base = uint32_t(m.positions.size());
@@ -118,14 +118,22 @@ struct GradientNoise {
     static float fade(float t) { return t * t * t * (t * (t * 6 - 15) + 10); }
     float grad(int h, float x, float y) const {
         switch (h & 7) {
-        case 0: return x + y;
-        case 1: return -x + y;
-        case 2: return x - y;
-        case 3: return -x - y;
-        case 4: return x;
-        case 5: return -x;
-        case 6: return y;
-        default: return -y;
+        case 0:
+            return x + y;
+        case 1:
+            return -x + y;
+        case 2:
+            return x - y;
+        case 3:
+            return -x - y;
+        case 4:
+            return x;
+        case 5:
+            return -x;
+        case 6:
+            return y;
+        default:
+            return -y;
         }
     }
     int hash(int x, int y, int period) const {
@@ -161,7 +169,8 @@ Texture make_marble_texture(uint32_t size, float scale, vec3 a, vec3 b, uint32_t
                 // Each octave doubles the lattice frequency and its wrap period with it, so the
                 // sum stays tileable.
                 const int cells = base_period * frequency;
-                turbulence += amplitude * std::abs(noise(s * float(cells), tt * float(cells), cells));
+                turbulence +=
+                    amplitude * std::abs(noise(s * float(cells), tt * float(cells), cells));
                 amplitude *= 0.5f;
                 frequency *= 2;
             }

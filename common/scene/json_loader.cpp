@@ -30,18 +30,23 @@ class Reader {
         throw InputError(fmt::format("{}: {}: {}", file_, field, what));
     }
 
-    void keys(const json& j, const std::string& field, std::initializer_list<const char*> allowed) const {
+    void keys(const json& j, const std::string& field,
+              std::initializer_list<const char*> allowed) const {
         if (!j.is_object()) fail(field, "expected an object");
         std::set<std::string> ok(allowed.begin(), allowed.end());
         for (const auto& item : j.items())
             if (!ok.count(item.key())) {
                 std::string list;
-                for (const char* a : allowed) list += fmt::format("{}{}", list.empty() ? "" : ", ", a);
-                fail(join(field, item.key()), fmt::format("unknown key (expected one of: {})", list));
+                for (const char* a : allowed)
+                    list += fmt::format("{}{}", list.empty() ? "" : ", ", a);
+                fail(join(field, item.key()),
+                     fmt::format("unknown key (expected one of: {})", list));
             }
     }
 
-    static std::string join(const std::string& a, const std::string& b) { return a.empty() ? b : a + "." + b; }
+    static std::string join(const std::string& a, const std::string& b) {
+        return a.empty() ? b : a + "." + b;
+    }
 
     float number(const json& j, const std::string& field) const {
         if (!j.is_number()) fail(field, "expected a number");
@@ -65,7 +70,8 @@ class Reader {
 
     vec3 vector3(const json& j, const std::string& field) const {
         if (!j.is_array() || j.size() != 3) fail(field, "expected an array of 3 numbers");
-        return vec3(number(j[0], field + "[0]"), number(j[1], field + "[1]"), number(j[2], field + "[2]"));
+        return vec3(number(j[0], field + "[0]"), number(j[1], field + "[1]"),
+                    number(j[2], field + "[2]"));
     }
 
     vec3 color(const json& j, const std::string& field) const {
@@ -119,14 +125,16 @@ glm::mat4 read_transform(const Reader& r, const json& j, const std::string& fiel
         glm::mat4 m;
         for (int row = 0; row < 4; ++row)
             for (int col = 0; col < 4; ++col)
-                m[col][row] = r.number(j[row * 4 + col], fmt::format("{}[{}]", field, row * 4 + col));
+                m[col][row] =
+                    r.number(j[row * 4 + col], fmt::format("{}[{}]", field, row * 4 + col));
         if (m[0][3] != 0 || m[1][3] != 0 || m[2][3] != 0 || m[3][3] != 1)
             r.fail(field, "the last row must be 0 0 0 1 (affine transforms only)");
         return m;
     }
     r.keys(j, field, {"translate", "rotate", "scale"});
     glm::mat4 m(1.0f);
-    if (j.contains("translate")) m = glm::translate(m, r.vector3(j["translate"], field + ".translate"));
+    if (j.contains("translate"))
+        m = glm::translate(m, r.vector3(j["translate"], field + ".translate"));
     if (j.contains("rotate")) {
         const json& rot = j["rotate"];
         std::vector<const json*> list;
@@ -137,7 +145,8 @@ glm::mat4 read_transform(const Reader& r, const json& j, const std::string& fiel
         // Listed rotations apply in order, so the first is innermost: M = R_n ... R_1.
         glm::mat4 rm(1.0f);
         for (size_t i = 0; i < list.size(); ++i) {
-            const std::string f = rot.is_array() ? fmt::format("{}.rotate[{}]", field, i) : field + ".rotate";
+            const std::string f =
+                rot.is_array() ? fmt::format("{}.rotate[{}]", field, i) : field + ".rotate";
             r.keys(*list[i], f, {"axis", "degrees"});
             const vec3 axis = r.vector3(r.required(*list[i], f, "axis"), f + ".axis");
             if (glm::length(axis) == 0.0f) r.fail(f + ".axis", "must not be zero");
@@ -148,7 +157,8 @@ glm::mat4 read_transform(const Reader& r, const json& j, const std::string& fiel
     }
     if (j.contains("scale")) {
         const json& s = j["scale"];
-        const vec3 sv = s.is_number() ? vec3(r.number(s, field + ".scale")) : r.vector3(s, field + ".scale");
+        const vec3 sv =
+            s.is_number() ? vec3(r.number(s, field + ".scale")) : r.vector3(s, field + ".scale");
         m = glm::scale(m, sv);
     }
     return m;
@@ -157,12 +167,14 @@ glm::mat4 read_transform(const Reader& r, const json& j, const std::string& fiel
 Mesh inline_mesh(const Reader& r, const json& j, const std::string& field) {
     Mesh m;
     const json& verts = r.required(j, field, "vertices");
-    if (!verts.is_array() || verts.empty()) r.fail(field + ".vertices", "expected a non-empty array of [x, y, z]");
+    if (!verts.is_array() || verts.empty())
+        r.fail(field + ".vertices", "expected a non-empty array of [x, y, z]");
     for (size_t i = 0; i < verts.size(); ++i)
         m.positions.push_back(r.vector3(verts[i], fmt::format("{}.vertices[{}]", field, i)));
     auto index = [&](const json& e, const std::string& f) {
         const uint32_t v = r.count(e, f, 0, 0xFFFFFFFEu);
-        if (v >= m.positions.size()) r.fail(f, fmt::format("index {} is out of range: {} vertices", v, m.positions.size()));
+        if (v >= m.positions.size())
+            r.fail(f, fmt::format("index {} is out of range: {} vertices", v, m.positions.size()));
         return v;
     };
     if (j.contains("triangles")) {
@@ -180,7 +192,8 @@ Mesh inline_mesh(const Reader& r, const json& j, const std::string& field) {
         for (size_t i = 0; i < q.size(); ++i) {
             const std::string f = fmt::format("{}.quads[{}]", field, i);
             if (!q[i].is_array() || q[i].size() != 4) r.fail(f, "expected 4 vertex indices");
-            const uint32_t a = index(q[i][0], f), b = index(q[i][1], f), c = index(q[i][2], f), d = index(q[i][3], f);
+            const uint32_t a = index(q[i][0], f), b = index(q[i][1], f), c = index(q[i][2], f),
+                           d = index(q[i][3], f);
             m.triangles.push_back({a, b, c});
             m.triangles.push_back({a, c, d});
         }
@@ -208,7 +221,9 @@ MeshRef read_mesh(const Reader& r, const json& j, const std::string& field, Scen
         return ref;
     } else if (type == "sphere") {
         r.keys(j, field, {"type", "subdivisions", "inward"});
-        const uint32_t sub = j.contains("subdivisions") ? r.count(j["subdivisions"], field + ".subdivisions", 0, 8) : 4;
+        const uint32_t sub = j.contains("subdivisions")
+                                 ? r.count(j["subdivisions"], field + ".subdivisions", 0, 8)
+                                 : 4;
         const bool inward = j.contains("inward") && r.boolean(j["inward"], field + ".inward");
         m = make_icosphere(sub, inward);
     } else if (type == "quad") {
@@ -221,7 +236,9 @@ MeshRef read_mesh(const Reader& r, const json& j, const std::string& field, Scen
         r.keys(j, field, {"type", "vertices", "triangles", "quads"});
         m = inline_mesh(r, j, field);
     } else {
-        r.fail(field + ".type", fmt::format("unknown mesh type '{}' (expected obj, sphere, quad, box, triangles)", type));
+        r.fail(field + ".type",
+               fmt::format("unknown mesh type '{}' (expected obj, sphere, quad, box, triangles)",
+                           type));
     }
     finalize_mesh(m, fmt::format("{}: {}", r.file(), field), scene.skipped_triangles);
     if (m.triangles.empty()) r.fail(field, "has no triangles left after dropping degenerate ones");
@@ -246,16 +263,20 @@ Texture read_texture(const Reader& r, const json& j, const std::string& field) {
     }
     if (gen == "checker") {
         r.keys(j, field, {"generator", "size", "colors", "checks"});
-        const uint32_t checks = j.contains("checks") ? r.count(j["checks"], field + ".checks", 1, size) : 8;
+        const uint32_t checks =
+            j.contains("checks") ? r.count(j["checks"], field + ".checks", 1, size) : 8;
         return make_checker_texture(size, checks, a, b);
     }
     if (gen == "marble") {
         r.keys(j, field, {"generator", "size", "colors", "scale", "seed"});
-        const float scale = j.contains("scale") ? r.number(j["scale"], field + ".scale", 0.0f, 1000.0f) : 4.0f;
-        const uint32_t seed = j.contains("seed") ? r.count(j["seed"], field + ".seed", 0, 0xFFFFFFFFu) : 1;
+        const float scale =
+            j.contains("scale") ? r.number(j["scale"], field + ".scale", 0.0f, 1000.0f) : 4.0f;
+        const uint32_t seed =
+            j.contains("seed") ? r.count(j["seed"], field + ".seed", 0, 0xFFFFFFFFu) : 1;
         return make_marble_texture(size, scale, a, b, seed);
     }
-    r.fail(field + ".generator", fmt::format("unknown generator '{}' (expected checker or marble)", gen));
+    r.fail(field + ".generator",
+           fmt::format("unknown generator '{}' (expected checker or marble)", gen));
 }
 
 Material read_material(const Reader& r, const json& j, const std::string& field,
@@ -263,10 +284,16 @@ Material read_material(const Reader& r, const json& j, const std::string& field,
     r.keys(j, field, {"type", "Kd", "Ks", "Ns", "Ke", "Ni", "Tf", "map_Kd"});
     Material m = default_material();
     const std::string type = j.contains("type") ? r.string(j["type"], field + ".type") : "phong";
-    if (type == "phong") m.type = MATERIAL_PHONG;
-    else if (type == "mirror") m.type = MATERIAL_MIRROR;
-    else if (type == "dielectric") m.type = MATERIAL_DIELECTRIC;
-    else r.fail(field + ".type", fmt::format("unknown material type '{}' (expected phong, mirror, dielectric)", type));
+    if (type == "phong")
+        m.type = MATERIAL_PHONG;
+    else if (type == "mirror")
+        m.type = MATERIAL_MIRROR;
+    else if (type == "dielectric")
+        m.type = MATERIAL_DIELECTRIC;
+    else
+        r.fail(
+            field + ".type",
+            fmt::format("unknown material type '{}' (expected phong, mirror, dielectric)", type));
     if (j.contains("Kd")) m.kd = r.color(j["Kd"], field + ".Kd");
     if (j.contains("Ks")) m.ks = r.color(j["Ks"], field + ".Ks");
     if (j.contains("Ke")) m.ke = r.color(j["Ke"], field + ".Ke");
@@ -276,7 +303,8 @@ Material read_material(const Reader& r, const json& j, const std::string& field,
     if (j.contains("map_Kd")) {
         const std::string name = r.string(j["map_Kd"], field + ".map_Kd");
         auto it = textures.find(name);
-        if (it == textures.end()) r.fail(field + ".map_Kd", fmt::format("no texture named '{}'", name));
+        if (it == textures.end())
+            r.fail(field + ".map_Kd", fmt::format("no texture named '{}'", name));
         m.kd_texture = int(it->second);
     }
     if (m.type == MATERIAL_MIRROR && !j.contains("Ks")) m.ks = vec3(1.0f);
@@ -291,7 +319,9 @@ Material read_material(const Reader& r, const json& j, const std::string& field,
 Scene load_json_scene(const std::string& path, std::vector<std::string>& warnings) {
     const json root = parse_file(path);
     const Reader r(path);
-    r.keys(root, "", {"camera", "film", "render", "textures", "materials", "meshes", "objects", "lights", "environment"});
+    r.keys(root, "",
+           {"camera", "film", "render", "textures", "materials", "meshes", "objects", "lights",
+            "environment"});
     Scene scene;
     scene.path = path;
 
@@ -301,21 +331,25 @@ Scene load_json_scene(const std::string& path, std::vector<std::string>& warning
         scene.camera.eye = r.vector3(r.required(c, "camera", "eye"), "camera.eye");
         scene.camera.target = r.vector3(r.required(c, "camera", "target"), "camera.target");
         if (c.contains("up")) scene.camera.up = r.vector3(c["up"], "camera.up");
-        if (c.contains("fov")) scene.camera.fov_y_degrees = r.number(c["fov"], "camera.fov", 1e-3f, 179.0f);
+        if (c.contains("fov"))
+            scene.camera.fov_y_degrees = r.number(c["fov"], "camera.fov", 1e-3f, 179.0f);
         scene.camera.given = true;
     }
     if (root.contains("film")) {
         const json& f = root["film"];
         r.keys(f, "film", {"width", "height"});
         if (f.contains("width")) scene.settings.width = r.count(f["width"], "film.width", 1, 16384);
-        if (f.contains("height")) scene.settings.height = r.count(f["height"], "film.height", 1, 16384);
+        if (f.contains("height"))
+            scene.settings.height = r.count(f["height"], "film.height", 1, 16384);
     }
     if (root.contains("render")) {
         const json& s = root["render"];
         r.keys(s, "render", {"spp", "max_depth", "min_depth"});
         if (s.contains("spp")) scene.settings.spp = r.count(s["spp"], "render.spp", 1, 1u << 30);
-        if (s.contains("max_depth")) scene.settings.max_depth = r.count(s["max_depth"], "render.max_depth", 1, 100000);
-        if (s.contains("min_depth")) scene.settings.min_depth = r.count(s["min_depth"], "render.min_depth", 0, 100000);
+        if (s.contains("max_depth"))
+            scene.settings.max_depth = r.count(s["max_depth"], "render.max_depth", 1, 100000);
+        if (s.contains("min_depth"))
+            scene.settings.min_depth = r.count(s["min_depth"], "render.min_depth", 0, 100000);
     }
 
     std::map<std::string, uint32_t> textures;
@@ -331,7 +365,8 @@ Scene load_json_scene(const std::string& path, std::vector<std::string>& warning
 
     std::map<std::string, uint32_t> materials;
     if (root.contains("materials")) {
-        if (!root["materials"].is_object()) r.fail("materials", "expected an object of named materials");
+        if (!root["materials"].is_object())
+            r.fail("materials", "expected an object of named materials");
         for (const auto& [name, j] : root["materials"].items()) {
             scene.materials.push_back(read_material(r, j, "materials." + name, textures));
             scene.material_names.push_back(name);
@@ -362,10 +397,13 @@ Scene load_json_scene(const std::string& path, std::vector<std::string>& warning
         if (o.contains("material")) {
             const std::string mat = r.string(o["material"], f + ".material");
             auto it = materials.find(mat);
-            if (it == materials.end()) r.fail(f + ".material", fmt::format("no material named '{}'", mat));
+            if (it == materials.end())
+                r.fail(f + ".material", fmt::format("no material named '{}'", mat));
             material = it->second;
         }
-        const glm::mat4 xf = o.contains("transform") ? read_transform(r, o["transform"], f + ".transform") : glm::mat4(1.0f);
+        const glm::mat4 xf = o.contains("transform")
+                                 ? read_transform(r, o["transform"], f + ".transform")
+                                 : glm::mat4(1.0f);
         const double det = glm::determinant(glm::dmat3(xf));
         if (!(std::abs(det) > 1e-30)) r.fail(f + ".transform", "is singular (zero scale?)");
         for (const ObjPart& part : mit->second.parts) {
@@ -374,7 +412,8 @@ Scene load_json_scene(const std::string& path, std::vector<std::string>& warning
             obj.mesh = part.mesh;
             obj.material = material != NO_INDEX ? material : part.material;
             if (obj.material == NO_INDEX)
-                r.fail(f + ".material", fmt::format("mesh '{}' has no material of its own: name one", mesh_name));
+                r.fail(f + ".material",
+                       fmt::format("mesh '{}' has no material of its own: name one", mesh_name));
             obj.transform = xf;
             scene.objects.push_back(obj);
         }
@@ -401,7 +440,8 @@ Scene load_json_scene(const std::string& path, std::vector<std::string>& warning
                 light.p0 = -glm::normalize(d); // stored towards the light
                 light.value = r.color(r.required(l, f, "irradiance"), f + ".irradiance");
             } else {
-                r.fail(f + ".type", fmt::format("unknown light type '{}' (expected point, directional)", type));
+                r.fail(f + ".type",
+                       fmt::format("unknown light type '{}' (expected point, directional)", type));
             }
             scene.lights.push_back(light);
         }
@@ -413,7 +453,8 @@ Scene load_json_scene(const std::string& path, std::vector<std::string>& warning
         if (type == "constant") {
             r.keys(e, "environment", {"type", "radiance"});
             scene.environment.kind = EnvironmentKind::Constant;
-            scene.environment.radiance = r.color(r.required(e, "environment", "radiance"), "environment.radiance");
+            scene.environment.radiance =
+                r.color(r.required(e, "environment", "radiance"), "environment.radiance");
         } else if (type == "map") {
             r.keys(e, "environment", {"type", "file", "texture", "scale", "rotation"});
             scene.environment.kind = EnvironmentKind::Map;
@@ -427,13 +468,19 @@ Scene load_json_scene(const std::string& path, std::vector<std::string>& warning
             } else {
                 const std::string name = r.string(e["texture"], "environment.texture");
                 auto it = textures.find(name);
-                if (it == textures.end()) r.fail("environment.texture", fmt::format("no texture named '{}'", name));
+                if (it == textures.end())
+                    r.fail("environment.texture", fmt::format("no texture named '{}'", name));
                 scene.environment.texture = int(it->second);
             }
-            scene.environment.radiance = e.contains("scale") ? vec3(r.number(e["scale"], "environment.scale", 0.0f, 1e30f)) : vec3(1.0f);
-            if (e.contains("rotation")) scene.environment.rotation_degrees = r.number(e["rotation"], "environment.rotation");
+            scene.environment.radiance =
+                e.contains("scale") ? vec3(r.number(e["scale"], "environment.scale", 0.0f, 1e30f))
+                                    : vec3(1.0f);
+            if (e.contains("rotation"))
+                scene.environment.rotation_degrees =
+                    r.number(e["rotation"], "environment.rotation");
         } else {
-            r.fail("environment.type", fmt::format("unknown environment type '{}' (expected constant, map)", type));
+            r.fail("environment.type",
+                   fmt::format("unknown environment type '{}' (expected constant, map)", type));
         }
     }
     return scene;

@@ -19,7 +19,8 @@ std::string bundled_scenes_dir() {
     std::error_code ec;
     const fs::path exe = fs::read_symlink("/proc/self/exe", ec);
     if (!ec) {
-        for (const fs::path& p : {exe.parent_path() / "scenes", exe.parent_path().parent_path() / "scenes"})
+        for (const fs::path& p :
+             {exe.parent_path() / "scenes", exe.parent_path().parent_path() / "scenes"})
             if (fs::is_directory(p)) return p.string();
     }
     return TWINPATH_SOURCE_SCENES_DIR;
@@ -50,13 +51,15 @@ Scene load_obj_scene(const std::string& path, std::vector<std::string>& warnings
         scene.objects.push_back(o);
     }
     bool emits = false;
-    for (const Object& o : scene.objects) emits = emits || max3(scene.materials[o.material].ke) > 0.0f;
+    for (const Object& o : scene.objects)
+        emits = emits || max3(scene.materials[o.material].ke) > 0.0f;
     if (!emits) {
         scene.environment.kind = EnvironmentKind::Constant;
         scene.environment.radiance = vec3(1.0f);
-        warnings.push_back(fmt::format("{}: no emissive material: lighting it with a constant white "
-                                       "environment of radiance 1",
-                                       path));
+        warnings.push_back(
+            fmt::format("{}: no emissive material: lighting it with a constant white "
+                        "environment of radiance 1",
+                        path));
     }
     return scene; // camera.given stays false: flatten() frames the scene
 }
@@ -67,9 +70,12 @@ Scene load_scene(const std::string& path_or_name, std::vector<std::string>& warn
     const std::string path = resolve_scene_path(path_or_name);
     const std::string ext = fs::path(path).extension().string();
     Scene scene;
-    if (ext == ".json") scene = load_json_scene(path, warnings);
-    else if (ext == ".obj" || ext == ".OBJ") scene = load_obj_scene(path, warnings);
-    else input_error("{}: unknown scene format '{}' (expected .json or .obj)", path, ext);
+    if (ext == ".json")
+        scene = load_json_scene(path, warnings);
+    else if (ext == ".obj" || ext == ".OBJ")
+        scene = load_obj_scene(path, warnings);
+    else
+        input_error("{}: unknown scene format '{}' (expected .json or .obj)", path, ext);
     if (scene.skipped_triangles > 0)
         warnings.push_back(fmt::format("{}: skipped {} degenerate (zero-area) triangle(s)", path,
                                        scene.skipped_triangles));

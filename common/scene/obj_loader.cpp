@@ -20,8 +20,9 @@ namespace {
 
 // Statements that carry nothing twinpath renders; skipped without comment.
 const std::set<std::string> kIgnoredObj = {"o", "g", "s", "mg", "l", "p", "vp", "cstype", "deg"};
-const std::set<std::string> kIgnoredMtl = {"Ka", "d", "Tr", "map_Ka", "map_Ks", "map_Ns", "map_d",
-                                           "map_bump", "bump", "disp", "decal", "refl", "sharpness"};
+const std::set<std::string> kIgnoredMtl = {"Ka",     "d",     "Tr",       "map_Ka", "map_Ks",
+                                           "map_Ns", "map_d", "map_bump", "bump",   "disp",
+                                           "decal",  "refl",  "sharpness"};
 
 uint32_t add_texture(Scene& scene, const fs::path& file) {
     const std::string key = fs::weakly_canonical(file).string();
@@ -49,13 +50,16 @@ void load_mtl(const fs::path& path, Scene& scene, std::map<std::string, uint32_t
     size_t cur_line = 0;
     auto finish = [&]() {
         if (!cur) return;
-        if (illum == 3) cur->type = MATERIAL_MIRROR;
-        else if (illum == 7) cur->type = MATERIAL_DIELECTRIC;
+        if (illum == 3)
+            cur->type = MATERIAL_MIRROR;
+        else if (illum == 7)
+            cur->type = MATERIAL_DIELECTRIC;
         else if (illum < 0 || illum > 2)
             warnings.push_back(fmt::format("{}:{}: material '{}': illum {} is rendered as illum 2 "
                                            "(Phong); twinpath maps 3 to mirror and 7 to glass",
                                            path.string(), cur_line, cur_name, illum));
-        validate_material(*cur, fmt::format("{}:{}: material '{}'", path.string(), cur_line, cur_name));
+        validate_material(*cur,
+                          fmt::format("{}:{}: material '{}'", path.string(), cur_line, cur_name));
     };
     std::vector<std::string_view> tok;
     while (in.next(tok)) {
@@ -77,13 +81,20 @@ void load_mtl(const fs::path& path, Scene& scene, std::map<std::string, uint32_t
             continue;
         }
         if (!cur) in.fail("'{}' before any newmtl", key);
-        if (key == "Kd") cur->kd = in.color(tok);
-        else if (key == "Ks") cur->ks = in.color(tok);
-        else if (key == "Ke") cur->ke = in.color(tok);
-        else if (key == "Tf") cur->tf = in.color(tok);
-        else if (key == "Ns") cur->ns = in.number(tok, 1);
-        else if (key == "Ni") cur->ior = in.number(tok, 1);
-        else if (key == "illum") illum = int(in.integer(tok, 1));
+        if (key == "Kd")
+            cur->kd = in.color(tok);
+        else if (key == "Ks")
+            cur->ks = in.color(tok);
+        else if (key == "Ke")
+            cur->ke = in.color(tok);
+        else if (key == "Tf")
+            cur->tf = in.color(tok);
+        else if (key == "Ns")
+            cur->ns = in.number(tok, 1);
+        else if (key == "Ni")
+            cur->ior = in.number(tok, 1);
+        else if (key == "illum")
+            illum = int(in.integer(tok, 1));
         else if (key == "map_Kd") {
             const fs::path file = path.parent_path() / map_file(in, tok);
             if (!fs::exists(file)) in.fail("map_Kd texture '{}' does not exist", file.string());
@@ -94,7 +105,8 @@ void load_mtl(const fs::path& path, Scene& scene, std::map<std::string, uint32_t
     finish();
     if (!ignored.empty()) {
         std::string list;
-        for (const auto& [k, n] : ignored) list += fmt::format("{}{} ({}x)", list.empty() ? "" : ", ", k, n);
+        for (const auto& [k, n] : ignored)
+            list += fmt::format("{}{} ({}x)", list.empty() ? "" : ", ", k, n);
         warnings.push_back(fmt::format("{}: ignored statements twinpath does not render: {}",
                                        path.string(), list));
     }
@@ -102,7 +114,9 @@ void load_mtl(const fs::path& path, Scene& scene, std::map<std::string, uint32_t
 
 struct Corner {
     int v, vt, vn;
-    bool operator<(const Corner& o) const { return std::tie(v, vt, vn) < std::tie(o.v, o.vt, o.vn); }
+    bool operator<(const Corner& o) const {
+        return std::tie(v, vt, vn) < std::tie(o.v, o.vt, o.vn);
+    }
 };
 
 struct Group {
@@ -146,7 +160,8 @@ std::vector<ObjPart> load_obj(const std::string& path_str, Scene& scene, uint32_
     while (in.next(tok)) {
         const std::string_view key = tok[0];
         if (key == "v") {
-            if (tok.size() != 4 && tok.size() != 5) in.fail("'v' needs 3 coordinates (and an optional w)");
+            if (tok.size() != 4 && tok.size() != 5)
+                in.fail("'v' needs 3 coordinates (and an optional w)");
             const vec3 p = in.vec3_at(tok, 1);
             if (!is_finite3(p)) in.fail("vertex position is not finite");
             v.push_back(p);
@@ -166,7 +181,8 @@ std::vector<ObjPart> load_obj(const std::string& path_str, Scene& scene, uint32_
                 Corner k{-1, -1, -1};
                 k.v = resolve_index(in, c.substr(0, s1), v.size(), "vertex");
                 if (s1 != std::string_view::npos) {
-                    const std::string_view t = c.substr(s1 + 1, s2 == std::string_view::npos ? s2 : s2 - s1 - 1);
+                    const std::string_view t =
+                        c.substr(s1 + 1, s2 == std::string_view::npos ? s2 : s2 - s1 - 1);
                     if (!t.empty()) k.vt = resolve_index(in, t, vt.size(), "texture coordinate");
                     if (s2 != std::string_view::npos)
                         k.vn = resolve_index(in, c.substr(s2 + 1), vn.size(), "normal");
@@ -182,7 +198,8 @@ std::vector<ObjPart> load_obj(const std::string& path_str, Scene& scene, uint32_
             if (tok.size() < 2) in.fail("usemtl needs a material name");
             const std::string name = in.rest_after(1);
             auto it = materials.find(name);
-            if (it == materials.end()) in.fail("material '{}' is not defined by any mtllib before it", name);
+            if (it == materials.end())
+                in.fail("material '{}' is not defined by any mtllib before it", name);
             current = it->second;
         } else if (key == "mtllib") {
             if (tok.size() < 2) in.fail("mtllib needs a file name");
@@ -206,7 +223,9 @@ std::vector<ObjPart> load_obj(const std::string& path_str, Scene& scene, uint32_
                 all_vt = all_vt && c.vt >= 0;
             }
         Mesh m;
-        m.name = groups.size() == 1 ? stem : fmt::format("{}:{}", stem, scene.material_names.at(g.material));
+        m.name = groups.size() == 1
+                     ? stem
+                     : fmt::format("{}:{}", stem, scene.material_names.at(g.material));
         std::map<Corner, uint32_t> index;
         for (const auto& tri : g.triangles) {
             uvec3 out;

@@ -22,7 +22,8 @@ Material default_material() {
 
 namespace {
 void check_color(const vec3& c, const std::string& where, const char* field) {
-    if (!is_finite3(c)) input_error("{}: {} must be finite, got ({}, {}, {})", where, field, c.x, c.y, c.z);
+    if (!is_finite3(c))
+        input_error("{}: {} must be finite, got ({}, {}, {})", where, field, c.x, c.y, c.z);
     if (c.x < 0.0f || c.y < 0.0f || c.z < 0.0f)
         input_error("{}: {} must not be negative, got ({}, {}, {})", where, field, c.x, c.y, c.z);
 }
@@ -33,8 +34,10 @@ void validate_material(const Material& m, const std::string& where) {
     check_color(m.ks, where, "Ks");
     check_color(m.ke, where, "Ke");
     check_color(m.tf, where, "Tf");
-    if (!std::isfinite(m.ns) || m.ns < 0.0f) input_error("{}: Ns must be finite and >= 0, got {}", where, m.ns);
-    if (!std::isfinite(m.ior) || m.ior <= 0.0f) input_error("{}: Ni must be finite and > 0, got {}", where, m.ior);
+    if (!std::isfinite(m.ns) || m.ns < 0.0f)
+        input_error("{}: Ns must be finite and >= 0, got {}", where, m.ns);
+    if (!std::isfinite(m.ior) || m.ior <= 0.0f)
+        input_error("{}: Ni must be finite and > 0, got {}", where, m.ior);
     if (m.type == MATERIAL_PHONG) {
         // Energy conservation of the modified Phong BRDF needs kd + ks <= 1 per channel
         // (Lafortune & Willems 1994). A tolerance of 1e-6 absorbs decimal round-off in files.
@@ -70,9 +73,11 @@ void finalize_mesh(Mesh& mesh, const std::string& where, uint64_t& skipped_trian
         const uvec3 tri = mesh.triangles[t];
         for (int k = 0; k < 3; ++k)
             if (tri[k] >= nv)
-                input_error("{}: triangle {} uses vertex {} but there are {}", where, t, tri[k], nv);
+                input_error("{}: triangle {} uses vertex {} but there are {}", where, t, tri[k],
+                            nv);
         // Zero area in double precision: the triangle can never be hit, so it is skipped.
-        const glm::dvec3 a(mesh.positions[tri.x]), b(mesh.positions[tri.y]), c(mesh.positions[tri.z]);
+        const glm::dvec3 a(mesh.positions[tri.x]), b(mesh.positions[tri.y]),
+            c(mesh.positions[tri.z]);
         const glm::dvec3 n = glm::cross(b - a, c - a);
         if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0) {
             ++skipped_triangles;

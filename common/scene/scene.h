@@ -5,8 +5,8 @@
 
 #include "shared/types.h"
 
-#include <glm/mat4x4.hpp>
 #include <cstdint>
+#include <glm/mat4x4.hpp>
 #include <string>
 #include <vector>
 

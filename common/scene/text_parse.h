@@ -24,8 +24,8 @@ class LineReader {
 
     template <typename... Args>
     [[noreturn]] void fail(fmt::format_string<Args...> f, Args&&... args) const {
-        throw InputError(fmt::format("{}:{}: {}", path_, line_no_,
-                                     fmt::format(f, std::forward<Args>(args)...)));
+        throw InputError(
+            fmt::format("{}:{}: {}", path_, line_no_, fmt::format(f, std::forward<Args>(args)...)));
     }
 
     // Strict conversions: the whole token must be a number.

@@ -47,7 +47,9 @@ inline BsdfSample bsdf_sample_none() {
 // thesis's one-lobe estimator (eq. 2.32-2.33), the weight f cos / p always uses both lobes, so
 // it stays bounded when one lobe is tiny, and no sample is spent on absorption.
 
-inline vec3 mirror_direction(vec3 n, vec3 wo) { return normalize(2.0f * dot(n, wo) * n - wo); }
+inline vec3 mirror_direction(vec3 n, vec3 wo) {
+    return normalize(2.0f * dot(n, wo) * n - wo);
+}
 
 inline float phong_diffuse_probability(vec3 kd, vec3 ks) {
     float d = average(kd);
@@ -143,7 +145,9 @@ inline BsdfSample dielectric_sample(vec3 tf, float ior, vec3 n, vec3 wo, float u
 }
 
 // ---- dispatch over Material::type --------------------------------------------------------
-inline bool material_is_delta(Material m) { return m.type != MATERIAL_PHONG; }
+inline bool material_is_delta(Material m) {
+    return m.type != MATERIAL_PHONG;
+}
 
 inline vec3 bsdf_eval(Material m, vec3 n, vec3 wo, vec3 wi) {
     if (m.type != MATERIAL_PHONG) return vec3(0.0f);

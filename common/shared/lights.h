@@ -57,7 +57,9 @@ inline LightSample sample_directional_light(Light l) {
     return s;
 }
 
-inline vec3 triangle_light_normal(Light l) { return normalize(cross(l.p1 - l.p0, l.p2 - l.p0)); }
+inline vec3 triangle_light_normal(Light l) {
+    return normalize(cross(l.p1 - l.p0, l.p2 - l.p0));
+}
 
 // Area measure to solid angle: p_omega = p_A d^2 / cos(theta_l), with p_A = 1 / area.
 inline float triangle_light_pdf(float area, float dist, float cos_light) {
@@ -124,8 +126,8 @@ inline uint environment_map_pixel(vec2 st, uint w, uint h) {
 
 // Completes an environment-map sample once the engine has drawn `pixel` (probability p_pixel)
 // from the map's alias table; the engine looks the radiance up itself.
-inline LightSample sample_environment_map(uint pixel, float p_pixel, uint w, uint h,
-                                          float rotation, vec2 u) {
+inline LightSample sample_environment_map(uint pixel, float p_pixel, uint w, uint h, float rotation,
+                                          vec2 u) {
     vec2 st = environment_map_pixel_point(pixel, w, h, u);
     LightSample s;
     s.wi = rotate_y(latlong_to_direction(st), rotation);

@@ -13,17 +13,31 @@ const float INV_TWO_PI = 0.15915494309189533577f;
 const float INV_FOUR_PI = 0.07957747154594766788f;
 const float FLOAT_MAX = 3.402823466e38f;
 
-inline float max3(vec3 v) { return max(v.x, max(v.y, v.z)); }
-inline float average(vec3 v) { return (v.x + v.y + v.z) * (1.0f / 3.0f); }
+inline float max3(vec3 v) {
+    return max(v.x, max(v.y, v.z));
+}
+inline float average(vec3 v) {
+    return (v.x + v.y + v.z) * (1.0f / 3.0f);
+}
 
 // Rec. 709 / sRGB primaries luminance weights.
-inline float luminance(vec3 c) { return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z; }
+inline float luminance(vec3 c) {
+    return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
+}
 
-inline bool is_finite(float x) { return !(isnan(x) || isinf(x)); }
-inline bool is_finite3(vec3 v) { return is_finite(v.x) && is_finite(v.y) && is_finite(v.z); }
-inline bool is_black(vec3 v) { return v.x == 0.0f && v.y == 0.0f && v.z == 0.0f; }
+inline bool is_finite(float x) {
+    return !(isnan(x) || isinf(x));
+}
+inline bool is_finite3(vec3 v) {
+    return is_finite(v.x) && is_finite(v.y) && is_finite(v.z);
+}
+inline bool is_black(vec3 v) {
+    return v.x == 0.0f && v.y == 0.0f && v.z == 0.0f;
+}
 
-inline float safe_sqrt(float x) { return sqrt(max(x, 0.0f)); }
+inline float safe_sqrt(float x) {
+    return sqrt(max(x, 0.0f));
+}
 
 // exp(x) - 1 without the cancellation of the naive form for |x| << 1: below 1e-3 the Taylor
 // polynomial to x^3 has relative error < x^3/24 < 5e-11, far under float epsilon.

@@ -51,7 +51,9 @@ inline uvec4 pcg4d(uvec4 v) {
 }
 
 // The top 24 bits as a float in [0, 1): every value is exact, 1.0 is never returned.
-inline float uint_to_unit_float(uint h) { return float(h >> 8u) * (1.0f / 16777216.0f); }
+inline float uint_to_unit_float(uint h) {
+    return float(h >> 8u) * (1.0f / 16777216.0f);
+}
 
 struct RngKey {
     uint seed;

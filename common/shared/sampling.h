@@ -18,7 +18,9 @@ inline vec3 sample_cosine_hemisphere(vec2 u) {
     return vec3(cos(phi) * sin_theta, sin(phi) * sin_theta, cos_theta);
 }
 
-inline float cosine_hemisphere_pdf(float cos_theta) { return max(cos_theta, 0.0f) * INV_PI; }
+inline float cosine_hemisphere_pdf(float cos_theta) {
+    return max(cos_theta, 0.0f) * INV_PI;
+}
 
 // cos(alpha)^n for the Phong lobe, defined for every exponent >= 0 (GLSL's pow(0, 0) is
 // undefined) and computed as exp2(n log2 c) like every GPU does.
@@ -65,7 +67,9 @@ inline vec2 sample_uniform_triangle(vec2 u) {
 // ---- discrete choice: Walker's alias method (Vose's construction on the host) ----------
 // The table slot is floor(u n); a second, independent number decides between the slot and
 // its alias, so no fraction of u is reused and precision does not fall with n.
-inline uint alias_slot(float u, uint n) { return min(uint(u * float(n)), n - 1u); }
+inline uint alias_slot(float u, uint n) {
+    return min(uint(u * float(n)), n - 1u);
+}
 
 inline uint alias_resolve(uint slot, float slot_prob, uint slot_alias, float coin) {
     return coin < slot_prob ? slot : slot_alias;

@@ -64,8 +64,8 @@ inline SurfacePoint surface_point(Instance t, vec3 v0, vec3 v1, vec3 v2, vec2 ba
 
 // Interpolated vertex normals; flipped onto the geometric side when the mesh's normals
 // disagree with its winding, and ignored when they degenerate.
-inline void surface_set_shading_normal(INOUT(SurfacePoint) s, Instance t, vec3 n0, vec3 n1,
-                                       vec3 n2, vec2 bary) {
+inline void surface_set_shading_normal(INOUT(SurfacePoint) s, Instance t, vec3 n0, vec3 n1, vec3 n2,
+                                       vec2 bary) {
     vec3 n = instance_normal_to_world(t, barycentric_mix3(n0, n1, n2, bary));
     float len = length(n);
     if (!(len > 0.0f)) return;

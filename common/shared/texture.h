@@ -19,7 +19,9 @@ struct TexelFootprint {
     vec2 f; // blend weights along s and t
 };
 
-inline vec2 uv_to_image(vec2 uv) { return vec2(uv.x, 1.0f - uv.y); }
+inline vec2 uv_to_image(vec2 uv) {
+    return vec2(uv.x, 1.0f - uv.y);
+}
 
 // Wraps the integer-valued float i into [0, n); exact for |i| < 2^24.
 inline uint wrap_texel(float i, uint n) {

@@ -1,0 +1,29 @@
+// Locations the tests need, fixed at configure time, and a helper to run the twinpath binary.
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace tp::test {
+
+std::string twinpath_bin();
+std::string scenes_dir();
+std::string assets_dir(); // ../shared/assets; may be absent (asset tests then skip loudly)
+std::string source_dir();
+std::string glslang_validator();
+
+// A fresh empty directory under the build tree's temporary area, unique per call.
+std::string temp_dir(const std::string& tag);
+
+struct ProcessResult {
+    int exit_code = -1;
+    std::string out; // stdout and stderr together
+};
+
+// Runs a command line through /bin/sh, capturing its output.
+ProcessResult run(const std::string& command);
+
+// Single-quotes s for /bin/sh.
+std::string shell_quote(const std::string& s);
+
+} // namespace tp::test
