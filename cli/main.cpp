@@ -13,6 +13,7 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     const std::vector<tp::Subcommand> commands = {
         tp::add_render_command(app),
+        tp::add_compare_command(app),
         tp::add_info_command(app),
     };
     try {

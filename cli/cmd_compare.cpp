@@ -1,0 +1,114 @@
+// twinpath compare A.exr B.exr: do two renderings estimate the same image? (docs/compare.md)
+// Also --exact (deterministic layers, bit for bit) and --convergence (error against spp).
+// Exit codes: 0 consistent, 1 different (or biased), 2 bad input.
+#include "commands.h"
+
+#include "compare/compare.h"
+#include "compare/convergence.h"
+#include "compare/exact.h"
+#include "compare/report.h"
+#include "compare/summary.h"
+#include "compare/text_file.h"
+#include "util/error.h"
+
+#include <fmt/core.h>
+
+#include <memory>
+
+namespace tp {
+namespace {
+
+struct CompareArgs {
+    std::vector<std::string> files;
+    double alpha = 0.01;
+    std::string json, report, reference;
+    bool exact = false, convergence = false;
+    double tolerance = 0.0;
+    int tile = kDefaultTile;
+    double floor = kDefaultRelativeFloor;
+};
+
+void write_json(const std::string& path, const nlohmann::json& j) {
+    if (!path.empty()) write_text_file(path, j.dump(2) + "\n");
+}
+
+int run_exact(const CompareArgs& a) {
+    if (a.files.size() != 2) input_error("--exact compares two images, got {}", a.files.size());
+    const ExactResult r = exact_compare(a.files[0], read_exr(a.files[0]), a.files[1],
+                                        read_exr(a.files[1]), a.tolerance);
+    write_json(a.json, exact_json(r));
+    fmt::print("{}\n", exact_verdict_line(r));
+    return r.identical() ? 0 : 1;
+}
+
+int run_convergence(const CompareArgs& a) {
+    if (a.reference.empty()) input_error("--convergence needs --reference REF.exr");
+    if (a.files.size() < 2)
+        input_error("--convergence needs renderings at two or more spp, got {}", a.files.size());
+    const RgbImage ref = load_rgb_image(a.reference);
+    std::vector<RgbImage> series;
+    for (const std::string& f : a.files) series.push_back(load_rgb_image(f));
+    const ConvergenceResult r = convergence(ref, series, a.alpha);
+    write_json(a.json, convergence_json(r, ref));
+    fmt::print("{}\n", convergence_verdict_line(r));
+    return r.biased ? 1 : 0;
+}
+
+int run_statistical(const CompareArgs& a) {
+    if (a.files.size() != 2) input_error("compare needs two images, got {}", a.files.size());
+    const RgbImage img_a = load_rgb_image(a.files[0]);
+    const RgbImage img_b = load_rgb_image(a.files[1]);
+    CompareOptions opt;
+    opt.alpha = a.alpha;
+    opt.tile = a.tile;
+    opt.relative_floor = a.floor;
+    const CompareResult r = compare_images(img_a, img_b, opt);
+    write_json(a.json, compare_json(r, img_a, img_b));
+    if (!a.report.empty()) write_report(a.report, r, img_a, img_b);
+    fmt::print("{}\n", compare_verdict_line(r));
+    return r.different ? 1 : 0;
+}
+
+int run_compare(const CompareArgs& a) {
+    try {
+        if (!(a.alpha > 0.0 && a.alpha < 1.0))
+            input_error("--alpha must lie strictly between 0 and 1, got {}", a.alpha);
+        if (a.exact) return run_exact(a);
+        if (a.convergence) return run_convergence(a);
+        return run_statistical(a);
+    } catch (const InputError& e) {
+        // The JSON consumer learns why there is no result (the message names the file).
+        write_json(a.json, {{"verdict", "bad input"}, {"error", e.what()}});
+        throw;
+    }
+}
+
+} // namespace
+
+Subcommand add_compare_command(CLI::App& app) {
+    auto a = std::make_shared<CompareArgs>();
+    CLI::App* c = app.add_subcommand(
+        "compare", "Test whether two renderings (OpenEXR with variance) estimate the same image");
+    c->add_option("images", a->files, "A.exr B.exr (with --convergence: the spp series)")
+        ->required();
+    c->add_option("--alpha", a->alpha, "False-alarm probability of the whole test (default 0.01)");
+    c->add_option("--json", a->json, "Write the result as JSON");
+    c->add_option("--report", a->report, "Write PNGs and index.html into this directory");
+    CLI::Option* exact =
+        c->add_flag("--exact", a->exact, "Pixel-by-pixel equality of all common channels");
+    c->add_option("--tolerance", a->tolerance, "--exact: largest |a - b| counted as equal")
+        ->check(CLI::NonNegativeNumber)
+        ->needs(exact);
+    CLI::Option* conv = c->add_flag("--convergence", a->convergence,
+                                    "Fit error against spp over the images, vs --reference")
+                            ->excludes(exact);
+    c->add_option("--reference", a->reference, "--convergence: the reference image")->needs(conv);
+    c->add_option("--tile", a->tile, "Tile size of the global test (default 8)")
+        ->check(CLI::Range(1, 4096));
+    c->add_option("--floor", a->floor,
+                  "Relative floor of the difference's standard deviation (default 1e-4)")
+        ->check(CLI::Range(0.0, 1.0));
+    return {c, [a] { return run_compare(*a); }};
+}
+
+} // namespace tp

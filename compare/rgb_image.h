@@ -1,0 +1,36 @@
+// One rendering as compare sees it: the R, G, B means and, when the file has them, the
+// variance.R/G/B channels (variance of the mean, DESIGN.md "Image output"), in double.
+// Loading validates everything the statistics rely on; every failure is an InputError that
+// names the file (exit 2).
+#pragma once
+
+#include <array>
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tp {
+
+using Planes = std::array<std::vector<double>, 3>; // R, G, B; row-major, top row first
+
+struct RgbImage {
+    std::string path;
+    int width = 0, height = 0;
+    Planes mean;
+    Planes var;                 // empty planes when the file has no variance channels
+    std::optional<int64_t> spp; // twinpath:spp, when the header has it
+
+    bool has_variance() const { return !var[0].empty(); }
+    size_t pixels() const { return size_t(width) * size_t(height); }
+};
+
+// Reads R, G, B and variance.R/G/B. Rejects: a missing colour channel, variance channels
+// present for only some colours, NaN/Inf anywhere (counted per channel in the message),
+// negative variances, an spp attribute below 1.
+RgbImage load_rgb_image(const std::string& path);
+
+// Both images must have the same size: throws InputError naming both files.
+void require_same_size(const RgbImage& a, const RgbImage& b);
+
+} // namespace tp
