@@ -1,12 +1,41 @@
 // twinpath info [--json]: what this build can do and which devices it sees.
 #include "commands.h"
 
+#include "util/error.h"
+#include "vulkan_rt/vulkan_renderer.h"
+
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
 #include <embree3/rtcore.h>
 
 namespace tp {
+namespace {
+
+// The Vulkan devices as JSON; {"error": ...} instead when there is no usable Vulkan.
+nlohmann::json vulkan_json() {
+    nlohmann::json v;
+    try {
+        v["devices"] = nlohmann::json::array();
+        for (const DeviceInfo& d : list_vulkan_devices()) {
+            nlohmann::json j;
+            j["index"] = d.index;
+            j["name"] = d.name;
+            j["type"] = d.type;
+            j["api_version"] = d.api_version;
+            j["driver"] = d.driver;
+            j["memory_bytes"] = d.memory_bytes;
+            j["modes"] = d.modes();
+            if (!d.compute()) j["compute_missing"] = d.compute_missing;
+            v["devices"].push_back(j);
+        }
+    } catch (const RuntimeError& e) {
+        v = {{"error", e.what()}};
+    }
+    return v;
+}
+
+} // namespace
 
 Subcommand add_info_command(CLI::App& app) {
     auto json_out = std::make_shared<bool>(false);
@@ -17,11 +46,31 @@ Subcommand add_info_command(CLI::App& app) {
                 nlohmann::json j;
                 j["version"] = TWINPATH_VERSION;
                 j["backends"]["cpu"] = {{"embree", RTC_VERSION_STRING}};
-                if (*json_out)
+                j["backends"]["vulkan"] = vulkan_json();
+                if (*json_out) {
                     fmt::print("{}\n", j.dump(2));
-                else
-                    fmt::print("twinpath {}\n  cpu: Embree {} + TBB\n", TWINPATH_VERSION,
-                               RTC_VERSION_STRING);
+                    return 0;
+                }
+                fmt::print("twinpath {}\n  cpu: Embree {} + TBB\n", TWINPATH_VERSION,
+                           RTC_VERSION_STRING);
+                const nlohmann::json& v = j["backends"]["vulkan"];
+                if (v.contains("error")) {
+                    fmt::print("  vulkan: unavailable: {}\n", v["error"].get<std::string>());
+                    return 0;
+                }
+                fmt::print("  vulkan: {} device(s)\n", v["devices"].size());
+                for (const nlohmann::json& d : v["devices"]) {
+                    std::string modes;
+                    for (const auto& m : d["modes"])
+                        modes += (modes.empty() ? "" : ", ") + m.get<std::string>();
+                    fmt::print("    [{}] {} ({}), Vulkan {}, {}; modes: {}\n",
+                               d["index"].get<uint32_t>(), d["name"].get<std::string>(),
+                               d["type"].get<std::string>(), d["api_version"].get<std::string>(),
+                               d["driver"].get<std::string>(), modes.empty() ? "none" : modes);
+                    if (d.contains("compute_missing"))
+                        fmt::print("        compute mode needs: {}\n",
+                                   d["compute_missing"].get<std::string>());
+                }
                 return 0;
             }};
 }

@@ -7,6 +7,7 @@
 #include "image/png_io.h"
 #include "scene/flatten.h"
 #include "scene/load.h"
+#include "vulkan_rt/vulkan_renderer.h"
 
 #include <fmt/core.h>
 
@@ -73,10 +74,14 @@ int run_render(const RenderArgs& a) {
     opt.progress = bar.callback();
 
     RenderResult result;
-    if (a.backend == "cpu")
+    if (a.backend == "cpu") {
         result = render_cpu(flat, opt);
-    else
-        input_error("--backend vulkan: the Vulkan backend is not part of this build yet");
+    } else {
+        VulkanOptions vk;
+        vk.device = a.device;
+        vk.mode = a.vk_mode;
+        result = render_vulkan(flat, opt, vk);
+    }
     result.stats.scene = scene.path;
 
     write_exr(out, render_image(result));

@@ -25,8 +25,10 @@ inline float luminance(vec3 c) {
     return 0.2126f * c.x + 0.7152f * c.y + 0.0722f * c.z;
 }
 
+// Tested on the bit pattern (exponent all ones: Inf or NaN) rather than with isnan/isinf,
+// which a GPU compiler may fold to false unless the shader declares SignedZeroInfNanPreserve.
 inline bool is_finite(float x) {
-    return !(isnan(x) || isinf(x));
+    return (floatBitsToUint(x) & 0x7F800000u) != 0x7F800000u;
 }
 inline bool is_finite3(vec3 v) {
     return is_finite(v.x) && is_finite(v.y) && is_finite(v.z);

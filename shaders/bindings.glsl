@@ -1,0 +1,69 @@
+// The scene, BVH and film buffers of descriptor set 0 (slots in interface.h), as the render
+// shaders see them. Every block uses the scalar layout, so the arrays are byte-for-byte the
+// C++ vectors of FlatScene and of the BVH builder.
+#ifndef TP_SHADERS_BINDINGS_GLSL
+#define TP_SHADERS_BINDINGS_GLSL
+
+#extension GL_EXT_scalar_block_layout : require
+
+#include "interface.h"
+#include "shared/intersect.h"
+#include "shared/types.h"
+
+layout(scalar, set = 0, binding = BINDING_PARAMS) readonly buffer ParamsBuffer {
+    RenderParams params;
+};
+layout(scalar, set = 0, binding = BINDING_MATERIALS) readonly buffer MaterialBuffer {
+    Material materials[];
+};
+layout(scalar, set = 0, binding = BINDING_INSTANCES) readonly buffer InstanceBuffer {
+    Instance instances[];
+};
+layout(scalar, set = 0, binding = BINDING_MESHES) readonly buffer MeshBuffer {
+    MeshInfo meshes[];
+};
+layout(scalar, set = 0, binding = BINDING_POSITIONS) readonly buffer PositionBuffer {
+    vec3 positions[];
+};
+layout(scalar, set = 0, binding = BINDING_NORMALS) readonly buffer NormalBuffer {
+    vec3 normals[];
+};
+layout(scalar, set = 0, binding = BINDING_UVS) readonly buffer UvBuffer {
+    vec2 uvs[];
+};
+layout(scalar, set = 0, binding = BINDING_TRIANGLES) readonly buffer TriangleBuffer {
+    uvec3 triangles[];
+};
+layout(scalar, set = 0, binding = BINDING_LIGHTS) readonly buffer LightBuffer {
+    Light lights[];
+};
+layout(scalar, set = 0, binding = BINDING_LIGHT_TABLE) readonly buffer LightTableBuffer {
+    AliasEntry light_table[];
+};
+layout(scalar, set = 0, binding = BINDING_TEXTURES) readonly buffer TextureBuffer {
+    TextureInfo textures[];
+};
+layout(scalar, set = 0, binding = BINDING_TEXELS) readonly buffer TexelBuffer {
+    vec3 texels[];
+};
+layout(scalar, set = 0, binding = BINDING_ENV_TABLE) readonly buffer EnvTableBuffer {
+    AliasEntry env_table[];
+};
+layout(scalar, set = 0, binding = BINDING_BVH_NODES) readonly buffer BvhNodeBuffer {
+    BvhNode bvh_nodes[];
+};
+layout(scalar, set = 0, binding = BINDING_BVH_TRIS) readonly buffer BvhTriangleBuffer {
+    BvhTriangle bvh_triangles[];
+};
+layout(scalar, set = 0, binding = BINDING_ACCUM) buffer AccumBuffer {
+    PixelAccum accum[];
+};
+layout(scalar, set = 0, binding = BINDING_COUNTERS) buffer CounterBuffer {
+    uint counters[];
+};
+
+layout(push_constant, scalar) uniform BatchBlock {
+    BatchParams batch;
+};
+
+#endif // TP_SHADERS_BINDINGS_GLSL

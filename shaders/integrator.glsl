@@ -1,0 +1,106 @@
+// The GPU path loop: cpu_ref/integrator.cpp step by step (the per-vertex order of
+// shared/path.h), the same random-number dimensions, the same shared functions; only the ray
+// queries (the trace include chosen by the entry point) and the buffer reads
+// (scene_access.glsl) are the GPU's own. Include a trace include before this file.
+#ifndef TP_SHADERS_INTEGRATOR_GLSL
+#define TP_SHADERS_INTEGRATOR_GLSL
+
+#include "scene_access.glsl"
+#include "shared/camera.h"
+#include "shared/path.h"
+#include "shared/rng.h"
+#include "shared/roulette.h"
+
+struct RayCounts {
+    uint camera;
+    uint extension;
+    uint shadow;
+};
+
+// Radiance estimate of sample `sample_index` of pixel (x, y); rays are counted into `rays`.
+vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
+    RngKey key = rng_key(params.seed, y * params.camera.width + x, sample_index);
+
+    Ray ray;
+    ray.origin = params.camera.eye;
+    ray.dir = camera_direction(params.camera, float(x) + rng_get(key, RNG_PIXEL_X),
+                               float(y) + rng_get(key, RNG_PIXEL_Y));
+    ray.tmax = FLOAT_MAX;
+    ray.pad0 = 0u;
+    ++rays.camera;
+
+    vec3 L = vec3(0.0f);
+    vec3 T = vec3(1.0f);
+    bool prev_specular = true; // the camera ray: emitters seen directly get full weight
+    float prev_pdf = 0.0f;
+    for (uint bounce = 0u;; ++bounce) {
+        TraceHit hit;
+        if (!trace_closest(ray, hit)) {
+            if (params.env_light != NO_INDEX) {
+                float light_pdf = scene_light_selection_pdf(params.env_light) *
+                                  scene_environment_pdf(ray.dir);
+                L += T * scene_environment_radiance(ray.dir) *
+                     emission_mis_weight(prev_specular, prev_pdf, light_pdf);
+            }
+            break;
+        }
+        uint light_offset = instances[hit.instance].light_offset;
+        SurfacePoint sp = scene_surface(hit);
+        Material mat = scene_material(hit.instance, sp.uv);
+        vec3 wo = -ray.dir;
+
+        // 1. Emission, front face only.
+        float cos_emit = dot(sp.ng, wo);
+        if (!is_black(mat.ke) && cos_emit > 0.0f) {
+            float light_pdf = 0.0f;
+            if (light_offset != NO_INDEX) {
+                uint li = light_offset + hit.primitive;
+                light_pdf = scene_light_selection_pdf(li) *
+                            triangle_light_pdf(lights[li].area, hit.t, cos_emit);
+            }
+            L += T * mat.ke * emission_mis_weight(prev_specular, prev_pdf, light_pdf);
+        }
+
+        // 2. The maximum number of scattering events.
+        if (bounce >= params.max_depth) break;
+        if (mat.type != MATERIAL_DIELECTRIC) surface_face_viewer(sp, wo);
+
+        // 3. Next-event estimation.
+        if (!material_is_delta(mat) && params.light_count > 0u) {
+            uint slot = alias_slot(rng_bounce(key, bounce, RNG_LIGHT_SLOT), params.light_count);
+            AliasEntry e = light_table[slot];
+            uint li = alias_resolve(slot, e.prob, e.alias, rng_bounce(key, bounce, RNG_LIGHT_COIN));
+            float sel_pdf = scene_light_selection_pdf(li);
+            vec2 u = vec2(rng_bounce(key, bounce, RNG_LIGHT_U), rng_bounce(key, bounce, RNG_LIGHT_V));
+            LightSample ls = scene_sample_light(li, sp.p, u, rng_bounce(key, bounce, RNG_ENV_SLOT),
+                                                rng_bounce(key, bounce, RNG_ENV_COIN));
+            if (ls.pdf > 0.0f && dot(ls.wi, sp.ng) > 0.0f) {
+                vec3 f = bsdf_eval(mat, sp.ns, wo, ls.wi);
+                if (!is_black(f) && !is_black(ls.radiance)) {
+                    float light_pdf = sel_pdf * ls.pdf;
+                    vec3 contrib = T * f * (dot(sp.ns, ls.wi) / light_pdf) * ls.radiance;
+                    if (!ls.delta)
+                        contrib *= power_heuristic(light_pdf, bsdf_pdf(mat, sp.ns, wo, ls.wi));
+                    ++rays.shadow;
+                    if (!trace_occluded(shadow_ray(sp.p, sp.ng, ls, lights[li]))) L += contrib;
+                }
+            }
+        }
+
+        // 4. Scattering.
+        BsdfSample bs = bsdf_sample(
+            mat, sp.ns, wo, rng_bounce(key, bounce, RNG_LOBE),
+            vec2(rng_bounce(key, bounce, RNG_DIR_U), rng_bounce(key, bounce, RNG_DIR_V)));
+        if (bs.lobe == LOBE_NONE || !scatter_is_consistent(sp.ng, wo, bs.wi, bs.lobe)) break;
+        T *= bs.weight;
+        prev_specular = (bs.lobe & LOBE_SPECULAR) != 0u;
+        prev_pdf = bs.pdf;
+        if (!roulette_apply(T, bounce + 1u, params.min_depth, rng_bounce(key, bounce, RNG_ROULETTE)))
+            break;
+        ray = spawn_ray(sp.p, sp.ng, bs.wi);
+        ++rays.extension;
+    }
+    return L;
+}
+
+#endif // TP_SHADERS_INTEGRATOR_GLSL

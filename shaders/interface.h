@@ -1,0 +1,78 @@
+// The interface between the Vulkan host code and the render shaders: descriptor binding slots,
+// the push constants of one batch, the per-pixel accumulator and the ray counters. Written in
+// the shared-header dialect (common/shared/lang.h) so that vulkan_rt/ and shaders/ read the
+// same numbers. Every binding is a storage buffer in descriptor set 0.
+#ifndef TP_SHADERS_INTERFACE_H
+#define TP_SHADERS_INTERFACE_H
+
+#include "shared/lang.h"
+
+TP_NAMESPACE_BEGIN
+
+#ifdef __cplusplus
+using dvec3 = glm::dvec3;
+#endif
+
+// ---- descriptor set 0 ------------------------------------------------------------------------
+const uint BINDING_PARAMS = 0u;      // RenderParams
+const uint BINDING_MATERIALS = 1u;   // Material[]
+const uint BINDING_INSTANCES = 2u;   // Instance[]
+const uint BINDING_MESHES = 3u;      // MeshInfo[] (bvh_root filled in)
+const uint BINDING_POSITIONS = 4u;   // vec3[]
+const uint BINDING_NORMALS = 5u;     // vec3[], parallel to positions (dummy without normals)
+const uint BINDING_UVS = 6u;         // vec2[], parallel to positions (dummy without uvs)
+const uint BINDING_TRIANGLES = 7u;   // uvec3[], mesh-local vertex indices
+const uint BINDING_LIGHTS = 8u;      // Light[]
+const uint BINDING_LIGHT_TABLE = 9u; // AliasEntry[], light selection
+const uint BINDING_TEXTURES = 10u;   // TextureInfo[]
+const uint BINDING_TEXELS = 11u;     // vec3[]
+const uint BINDING_ENV_TABLE = 12u;  // AliasEntry[], environment-map pixels
+const uint BINDING_BVH_NODES = 13u;  // BvhNode[] (compute mode)
+const uint BINDING_BVH_TRIS = 14u;   // BvhTriangle[] (compute mode)
+const uint BINDING_ACCUM = 15u;      // PixelAccum[width * height]
+const uint BINDING_COUNTERS = 16u;   // uint[COUNTER_WORDS]
+const uint BINDING_COUNT = 17u;
+
+// ---- push constants of one dispatch ----------------------------------------------------------
+// The dispatch covers rows [row_begin, row_end) of the image, every column, and samples
+// [sample_begin, sample_begin + sample_count) of each of those pixels.
+struct BatchParams {
+    uint sample_begin;
+    uint sample_count;
+    uint row_begin;
+    uint row_end;
+    uint bvh_top_root;   // compute mode: the top-level root node
+    uint env_table_size; // entries of the environment-map pixel table (0: none)
+    uint pad0;
+    uint pad1;
+};
+
+// ---- accumulation ----------------------------------------------------------------------------
+// Per pixel, in double precision: the sum and the sum of squares of its finite samples and how
+// many there were. The host merges them into the Film with Film::add_batch (Chan et al.).
+struct PixelAccum {
+    dvec3 sum;
+    dvec3 sum_sq;
+    uint count;
+    uint pad0;
+};
+
+// Ray and sample counters, each a 64-bit value as (low, high) 32-bit words so that any Vulkan
+// device can add to them with 32-bit atomics and an explicit carry.
+const uint COUNTER_CAMERA = 0u;
+const uint COUNTER_EXTENSION = 2u;
+const uint COUNTER_SHADOW = 4u;
+const uint COUNTER_NAN = 6u;
+const uint COUNTER_WORDS = 8u;
+
+const uint RENDER_GROUP_X = 8u; // compute workgroup: 8 x 8 pixels
+const uint RENDER_GROUP_Y = 8u;
+
+#ifdef __cplusplus
+static_assert(sizeof(BatchParams) == 32, "BatchParams layout");
+static_assert(sizeof(PixelAccum) == 56 && offsetof(PixelAccum, count) == 48, "PixelAccum layout");
+#endif
+
+TP_NAMESPACE_END
+
+#endif // TP_SHADERS_INTERFACE_H

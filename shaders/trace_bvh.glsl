@@ -1,0 +1,119 @@
+// The compute mode's trace include: ray queries answered by software traversal of the
+// two-level BVH of vulkan_rt/bvh_builder.cpp (node layout: shared/intersect.h). The pipeline
+// mode replaces this file by one that answers the same two calls with traceRayEXT, the way
+// nvpro-samples vk_raytrace swaps traceray_rq.glsl and traceray_rtx.glsl; nothing else in the
+// shaders knows how rays are traced.
+//
+//   bool trace_closest(Ray ray, out TraceHit hit)  nearest hit in (0, ray.tmax)
+//   bool trace_occluded(Ray ray)                   any hit in (0, ray.tmax)
+//
+// Traversal: one loop and one stack for both levels. A popped entry is either a node index or
+// an instance marker (BVH_INSTANCE_FLAG | instance) pushed when the ray met that instance's
+// world-space box. Popping a marker moves the ray into the instance's object space
+// (o' = M^-1 o, d' = M^-1 d, not renormalised, so t is the same parameter in both spaces and
+// the closest distance found so far stays valid) and continues at the mesh's root; once the
+// stack is back at the height it had then, the mesh is done and the ray returns to world
+// space. Each visited node tests both children's boxes; leaves of triangles are intersected at
+// once, inner children are pushed far-first so that the nearer one is visited next. The
+// stack never holds more than depth(top) + depth(bottom) + 1 entries; the builder checks that
+// this fits BVH_STACK_SIZE.
+#ifndef TP_SHADERS_TRACE_BVH_GLSL
+#define TP_SHADERS_TRACE_BVH_GLSL
+
+#include "bindings.glsl"
+#include "shared/intersect.h"
+#include "shared/path.h"
+#include "shared/surface.h"
+#include "trace_hit.glsl"
+
+const uint BVH_INSTANCE_FLAG = 0x80000000u;
+
+bool bvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
+    hit.t = ray.tmax;
+    hit.instance = 0u;
+    hit.primitive = 0u;
+    hit.bary = vec2(0.0f);
+    bool found = false;
+    float tmax = ray.tmax;
+
+    vec3 world_inv_dir = ray_inverse_direction(ray.dir);
+    vec3 org = ray.origin;
+    vec3 inv_dir = world_inv_dir;
+    WatertightRay wr = watertight_ray(ray.dir);
+    uint inst = BVH_EMPTY; // the instance whose mesh is being traversed
+    uint inst_sp = 0u;     // stack height when it was entered
+
+    uint stack[BVH_STACK_SIZE];
+    uint sp = 0u;
+    stack[sp++] = batch.bvh_top_root;
+    for (;;) {
+        if (inst != BVH_EMPTY && sp == inst_sp) { // the mesh is done: back to world space
+            inst = BVH_EMPTY;
+            org = ray.origin;
+            inv_dir = world_inv_dir;
+        }
+        if (sp == 0u) break;
+        uint entry = stack[--sp];
+        if ((entry & BVH_INSTANCE_FLAG) != 0u) {
+            inst = entry & ~BVH_INSTANCE_FLAG;
+            inst_sp = sp;
+            Instance I = instances[inst];
+            org = instance_point_to_object(I, ray.origin);
+            vec3 dir = instance_vector_to_object(I, ray.dir);
+            inv_dir = ray_inverse_direction(dir);
+            wr = watertight_ray(dir);
+            entry = meshes[I.mesh].bvh_root;
+        }
+        BvhNode n = bvh_nodes[entry];
+        float t0;
+        float t1;
+        bool hit0 = n.ref0 != BVH_EMPTY && intersect_aabb(org, inv_dir, n.lo0, n.hi0, tmax, t0);
+        bool hit1 = n.ref1 != BVH_EMPTY && intersect_aabb(org, inv_dir, n.lo1, n.hi1, tmax, t1);
+        if (inst != BVH_EMPTY) { // bottom level: leaves hold triangles
+            for (uint c = 0u; c < 2u; ++c) {
+                bool leaf_hit = c == 0u ? hit0 && n.count0 > 0u : hit1 && n.count1 > 0u;
+                if (!leaf_hit) continue;
+                uint first = c == 0u ? n.ref0 : n.ref1;
+                uint end = first + (c == 0u ? n.count0 : n.count1);
+                for (uint i = first; i < end; ++i) {
+                    BvhTriangle tri = bvh_triangles[i];
+                    vec3 tuv;
+                    if (!intersect_triangle(org, wr, tri.v0, tri.v1, tri.v2, tmax, tuv)) continue;
+                    found = true;
+                    tmax = tuv.x;
+                    hit.t = tuv.x;
+                    hit.instance = inst;
+                    hit.primitive = tri.primitive;
+                    hit.bary = vec2(tuv.y, tuv.z);
+                    if (any_hit) return true;
+                }
+            }
+            hit0 = hit0 && n.count0 == 0u;
+            hit1 = hit1 && n.count1 == 0u;
+        }
+        // Top-level leaves become instance markers; inner children node indices.
+        uint e0 = n.count0 > 0u ? (BVH_INSTANCE_FLAG | n.ref0) : n.ref0;
+        uint e1 = n.count1 > 0u ? (BVH_INSTANCE_FLAG | n.ref1) : n.ref1;
+        if (hit0 && hit1) {
+            bool near0 = t0 <= t1;
+            stack[sp++] = near0 ? e1 : e0;
+            stack[sp++] = near0 ? e0 : e1;
+        } else if (hit0) {
+            stack[sp++] = e0;
+        } else if (hit1) {
+            stack[sp++] = e1;
+        }
+    }
+    return found;
+}
+
+bool trace_closest(Ray ray, out TraceHit hit) {
+    return bvh_traverse(ray, false, hit);
+}
+
+bool trace_occluded(Ray ray) {
+    TraceHit ignored;
+    return bvh_traverse(ray, true, ignored);
+}
+
+#endif // TP_SHADERS_TRACE_BVH_GLSL

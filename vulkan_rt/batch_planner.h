@@ -1,0 +1,45 @@
+// Splits a render into GPU submissions that each take about `target_seconds`, so that no
+// submission comes near a display watchdog (Windows TDR: 2 s) and --time-limit and progress
+// stay responsive. A pass traces `samples` samples of every pixel, as one submission or as
+// bands of rows; the work of the next submission (pixels x samples) follows the throughput
+// measured on the previous ones, changing by at most 4x at a time.
+#pragma once
+
+#include <cstdint>
+
+namespace tp {
+
+struct Batch {
+    uint32_t sample_begin;
+    uint32_t sample_count;
+    uint32_t row_begin;
+    uint32_t row_end;
+};
+
+class BatchPlanner {
+  public:
+    BatchPlanner(uint32_t width, uint32_t height, uint32_t spp, double target_seconds);
+
+    bool done() const { return samples_done_ >= spp_; }
+    Batch next() const;
+    // The batch from next() finished in `seconds` (wall time of its submission).
+    void completed(const Batch& b, double seconds);
+
+    bool at_pass_boundary() const { return row_ == 0; }
+    uint32_t samples_done() const { return samples_done_; } // whole passes
+    double fraction_done() const;
+    uint64_t work() const { return work_; } // pixel-samples planned per submission
+
+    static constexpr uint32_t kMaxSamplesPerBatch = 256;
+    static constexpr uint64_t kInitialWork = 16384;
+
+  private:
+    uint32_t width_, height_, spp_;
+    double target_;
+    uint64_t work_ = kInitialWork;
+    uint32_t samples_done_ = 0;
+    uint32_t row_ = 0;          // next row of the current pass
+    uint32_t pass_samples_ = 0; // samples per pixel of the current pass (0: not started)
+};
+
+} // namespace tp

@@ -1,0 +1,217 @@
+#include "vulkan_rt/context.h"
+
+#include "util/error.h"
+#include "vulkan_rt/device_query.h"
+#include "vulkan_rt/vk_error.h"
+
+#include <fmt/core.h>
+
+#include <cstring>
+
+namespace tp {
+namespace {
+
+const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
+
+bool layer_available(const char* name) {
+    uint32_t n = 0;
+    vk_check(vkEnumerateInstanceLayerProperties(&n, nullptr), "listing instance layers");
+    std::vector<VkLayerProperties> layers(n);
+    vk_check(vkEnumerateInstanceLayerProperties(&n, layers.data()), "listing instance layers");
+    for (const VkLayerProperties& l : layers)
+        if (std::strcmp(l.layerName, name) == 0) return true;
+    return false;
+}
+
+bool instance_extension_available(const char* name) {
+    uint32_t n = 0;
+    vk_check(vkEnumerateInstanceExtensionProperties(nullptr, &n, nullptr),
+             "listing instance extensions");
+    std::vector<VkExtensionProperties> exts(n);
+    vk_check(vkEnumerateInstanceExtensionProperties(nullptr, &n, exts.data()),
+             "listing instance extensions");
+    for (const VkExtensionProperties& e : exts)
+        if (std::strcmp(e.extensionName, name) == 0) return true;
+    return false;
+}
+
+} // namespace
+
+VulkanInstance::VulkanInstance() {
+    const ValidationRequest request = validation_request();
+    if (request != ValidationRequest::Off) {
+        validation_ = layer_available(kValidationLayer);
+        if (!validation_ && request == ValidationRequest::Required)
+            runtime_error("TWINPATH_VALIDATION=1 but the Vulkan validation layer {} is not "
+                          "installed (Debian: vulkan-validationlayers)",
+                          kValidationLayer);
+        if (!validation_)
+            fmt::print(stderr,
+                       "twinpath: warning: {} is not installed; running without "
+                       "Vulkan validation\n",
+                       kValidationLayer);
+    }
+
+    std::vector<const char*> extensions, layers;
+    VkInstanceCreateFlags flags = 0;
+    // Portability drivers (MoltenVK) are only listed when the application asks for them.
+    if (instance_extension_available(VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME)) {
+        extensions.push_back(VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME);
+        flags |= VK_INSTANCE_CREATE_ENUMERATE_PORTABILITY_BIT_KHR;
+    }
+    VkDebugUtilsMessengerCreateInfoEXT messenger_ci{};
+    if (validation_) {
+        extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
+        layers.push_back(kValidationLayer);
+        messenger_ci = messenger_.create_info();
+    }
+
+    VkApplicationInfo app{};
+    app.sType = VK_STRUCTURE_TYPE_APPLICATION_INFO;
+    app.pApplicationName = "twinpath";
+    app.pEngineName = "twinpath";
+    app.apiVersion = VK_API_VERSION_1_2;
+    VkInstanceCreateInfo ci{};
+    ci.sType = VK_STRUCTURE_TYPE_INSTANCE_CREATE_INFO;
+    ci.pNext = validation_ ? &messenger_ci : nullptr;
+    ci.flags = flags;
+    ci.pApplicationInfo = &app;
+    ci.enabledExtensionCount = uint32_t(extensions.size());
+    ci.ppEnabledExtensionNames = extensions.data();
+    ci.enabledLayerCount = uint32_t(layers.size());
+    ci.ppEnabledLayerNames = layers.data();
+    vk_check(vkCreateInstance(&ci, nullptr, &instance_), "creating the Vulkan instance");
+    if (validation_) messenger_.attach(instance_);
+
+    uint32_t n = 0;
+    vk_check(vkEnumeratePhysicalDevices(instance_, &n, nullptr), "listing Vulkan devices");
+    physical_.resize(n);
+    vk_check(vkEnumeratePhysicalDevices(instance_, &n, physical_.data()), "listing Vulkan devices");
+    physical_.resize(n);
+}
+
+VulkanInstance::~VulkanInstance() {
+    messenger_.detach();
+    if (instance_) vkDestroyInstance(instance_, nullptr);
+}
+
+std::vector<DeviceInfo> VulkanInstance::devices() const {
+    std::vector<DeviceInfo> list;
+    for (uint32_t i = 0; i < physical_.size(); ++i) list.push_back(query_device(physical_[i], i));
+    return list;
+}
+
+VulkanContext::VulkanContext(const std::string& selector)
+    : instance_(std::make_unique<VulkanInstance>()) {
+    const std::vector<DeviceInfo> devices = instance_->devices();
+    info_ = select_device(devices, selector);
+    physical_ = instance_->physical_devices()[info_.index];
+
+    VkPhysicalDeviceProperties props;
+    vkGetPhysicalDeviceProperties(physical_, &props);
+    limits_ = props.limits;
+    vkGetPhysicalDeviceMemoryProperties(physical_, &memory_);
+
+    uint32_t nq = 0;
+    vkGetPhysicalDeviceQueueFamilyProperties(physical_, &nq, nullptr);
+    std::vector<VkQueueFamilyProperties> queues(nq);
+    vkGetPhysicalDeviceQueueFamilyProperties(physical_, &nq, queues.data());
+    // Prefer a compute family that can also write timestamps.
+    bool found = false;
+    for (uint32_t i = 0; i < nq; ++i) {
+        if (!(queues[i].queueFlags & VK_QUEUE_COMPUTE_BIT)) continue;
+        if (!found || (timestamp_bits_ == 0 && queues[i].timestampValidBits > 0)) {
+            queue_family_ = i;
+            timestamp_bits_ = queues[i].timestampValidBits;
+            found = true;
+        }
+    }
+
+    const float priority = 1.0f;
+    VkDeviceQueueCreateInfo qci{};
+    qci.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
+    qci.queueFamilyIndex = queue_family_;
+    qci.queueCount = 1;
+    qci.pQueuePriorities = &priority;
+    VkPhysicalDeviceVulkan12Features f12{};
+    f12.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
+    f12.scalarBlockLayout = VK_TRUE;
+    VkPhysicalDeviceFeatures2 features{};
+    features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
+    features.pNext = &f12;
+    features.features.shaderFloat64 = VK_TRUE;
+    VkDeviceCreateInfo dci{};
+    dci.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
+    dci.pNext = &features;
+    dci.queueCreateInfoCount = 1;
+    dci.pQueueCreateInfos = &qci;
+    vk_check(vkCreateDevice(physical_, &dci, nullptr, &device_), "creating the Vulkan device");
+    vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
+
+    VkCommandPoolCreateInfo pci{};
+    pci.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
+    pci.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+    pci.queueFamilyIndex = queue_family_;
+    vk_check(vkCreateCommandPool(device_, &pci, nullptr, &pool_), "creating a command pool");
+    VkFenceCreateInfo fci{};
+    fci.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+    vk_check(vkCreateFence(device_, &fci, nullptr, &fence_), "creating a fence");
+}
+
+VulkanContext::~VulkanContext() {
+    if (device_) {
+        vkDeviceWaitIdle(device_); // best effort: a lost device cannot be waited for
+        vkDestroyFence(device_, fence_, nullptr);
+        vkDestroyCommandPool(device_, pool_, nullptr);
+        vkDestroyDevice(device_, nullptr);
+    }
+}
+
+uint32_t VulkanContext::memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,
+                                    VkMemoryPropertyFlags preferred) const {
+    int fallback = -1;
+    for (uint32_t i = 0; i < memory_.memoryTypeCount; ++i) {
+        if (!(type_bits & (1u << i))) continue;
+        const VkMemoryPropertyFlags f = memory_.memoryTypes[i].propertyFlags;
+        if ((f & required) != required) continue;
+        if ((f & preferred) == preferred) return i;
+        if (fallback < 0) fallback = int(i);
+    }
+    if (fallback < 0)
+        runtime_error("the Vulkan device has no memory type with the properties {:#x}",
+                      uint32_t(required));
+    return uint32_t(fallback);
+}
+
+void VulkanContext::submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const {
+    VkCommandBufferAllocateInfo ai{};
+    ai.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;
+    ai.commandPool = pool_;
+    ai.level = VK_COMMAND_BUFFER_LEVEL_PRIMARY;
+    ai.commandBufferCount = 1;
+    VkCommandBuffer cmd = VK_NULL_HANDLE;
+    vk_check(vkAllocateCommandBuffers(device_, &ai, &cmd), "allocating a command buffer");
+    struct Release {
+        VkDevice d;
+        VkCommandPool p;
+        VkCommandBuffer c;
+        ~Release() { vkFreeCommandBuffers(d, p, 1, &c); }
+    } release{device_, pool_, cmd};
+
+    VkCommandBufferBeginInfo bi{};
+    bi.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_BEGIN_INFO;
+    bi.flags = VK_COMMAND_BUFFER_USAGE_ONE_TIME_SUBMIT_BIT;
+    vk_check(vkBeginCommandBuffer(cmd, &bi), "recording commands");
+    record(cmd);
+    vk_check(vkEndCommandBuffer(cmd), "recording commands");
+
+    VkSubmitInfo si{};
+    si.sType = VK_STRUCTURE_TYPE_SUBMIT_INFO;
+    si.commandBufferCount = 1;
+    si.pCommandBuffers = &cmd;
+    vk_check(vkResetFences(device_, 1, &fence_), "resetting a fence");
+    vk_check(vkQueueSubmit(queue_, 1, &si, fence_), "submitting work to the GPU");
+    vk_check(vkWaitForFences(device_, 1, &fence_, VK_TRUE, UINT64_MAX), "waiting for the GPU");
+}
+
+} // namespace tp

@@ -1,0 +1,77 @@
+// The Vulkan instance (with the validation layer when requested, validation.h) and, for
+// rendering, one logical device with one compute queue.
+#pragma once
+
+#include "vulkan_rt/device_info.h"
+#include "vulkan_rt/validation.h"
+
+#include <vulkan/vulkan.h>
+
+#include <functional>
+#include <memory>
+#include <vector>
+
+namespace tp {
+
+class VulkanInstance {
+  public:
+    // Throws RuntimeError when there is no Vulkan loader/driver, or when validation is
+    // required (TWINPATH_VALIDATION=1) and the Khronos layer is not installed.
+    VulkanInstance();
+    ~VulkanInstance();
+    VulkanInstance(const VulkanInstance&) = delete;
+    VulkanInstance& operator=(const VulkanInstance&) = delete;
+
+    VkInstance handle() const { return instance_; }
+    const std::vector<VkPhysicalDevice>& physical_devices() const { return physical_; }
+    std::vector<DeviceInfo> devices() const;
+
+    bool validation_enabled() const { return validation_; }
+    uint64_t validation_messages() const { return messenger_.messages(); }
+
+  private:
+    VkInstance instance_ = VK_NULL_HANDLE;
+    ValidationMessenger messenger_;
+    bool validation_ = false;
+    std::vector<VkPhysicalDevice> physical_;
+};
+
+class VulkanContext {
+  public:
+    // Opens the device that `selector` names (device_info.h, select_device).
+    explicit VulkanContext(const std::string& selector);
+    ~VulkanContext();
+    VulkanContext(const VulkanContext&) = delete;
+    VulkanContext& operator=(const VulkanContext&) = delete;
+
+    const VulkanInstance& instance() const { return *instance_; }
+    const DeviceInfo& info() const { return info_; }
+    VkPhysicalDevice physical() const { return physical_; }
+    VkDevice device() const { return device_; }
+    VkQueue queue() const { return queue_; }
+    const VkPhysicalDeviceLimits& limits() const { return limits_; }
+    uint32_t timestamp_valid_bits() const { return timestamp_bits_; }
+
+    // A memory type allowed by `type_bits` with all of `required`, preferring one that also
+    // has `preferred`; throws RuntimeError when there is none.
+    uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,
+                         VkMemoryPropertyFlags preferred = 0) const;
+
+    // Records commands into a fresh primary command buffer, submits it and waits.
+    void submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const;
+
+  private:
+    std::unique_ptr<VulkanInstance> instance_;
+    DeviceInfo info_;
+    VkPhysicalDevice physical_ = VK_NULL_HANDLE;
+    VkPhysicalDeviceLimits limits_{};
+    VkPhysicalDeviceMemoryProperties memory_{};
+    VkDevice device_ = VK_NULL_HANDLE;
+    uint32_t queue_family_ = 0;
+    uint32_t timestamp_bits_ = 0;
+    VkQueue queue_ = VK_NULL_HANDLE;
+    VkCommandPool pool_ = VK_NULL_HANDLE;
+    VkFence fence_ = VK_NULL_HANDLE;
+};
+
+} // namespace tp
