@@ -49,11 +49,13 @@ layout(scalar, set = 0, binding = BINDING_TEXELS) readonly buffer TexelBuffer {
 layout(scalar, set = 0, binding = BINDING_ENV_TABLE) readonly buffer EnvTableBuffer {
     AliasEntry env_table[];
 };
-layout(scalar, set = 0, binding = BINDING_BVH_NODES) readonly buffer BvhNodeBuffer {
-    BvhNode bvh_nodes[];
+// The BVH arrays are read as vec4s (BvhNode: 4, BvhTriangle: 3 per item) so that every load
+// is one aligned 16-byte transaction; trace_bvh.glsl reassembles the structs.
+layout(std430, set = 0, binding = BINDING_BVH_NODES) readonly buffer BvhNodeBuffer {
+    vec4 bvh_node_words[];
 };
-layout(scalar, set = 0, binding = BINDING_BVH_TRIS) readonly buffer BvhTriangleBuffer {
-    BvhTriangle bvh_triangles[];
+layout(std430, set = 0, binding = BINDING_BVH_TRIS) readonly buffer BvhTriangleBuffer {
+    vec4 bvh_triangle_words[];
 };
 layout(scalar, set = 0, binding = BINDING_ACCUM) buffer AccumBuffer {
     PixelAccum accum[];

@@ -28,6 +28,23 @@
 
 const uint BVH_INSTANCE_FLAG = 0x80000000u;
 
+BvhNode bvh_load_node(uint i) {
+    vec4 a = bvh_node_words[4u * i];
+    vec4 b = bvh_node_words[4u * i + 1u];
+    vec4 c = bvh_node_words[4u * i + 2u];
+    vec4 d = bvh_node_words[4u * i + 3u];
+    BvhNode n;
+    n.lo0 = a.xyz;
+    n.ref0 = floatBitsToUint(a.w);
+    n.hi0 = b.xyz;
+    n.count0 = floatBitsToUint(b.w);
+    n.lo1 = c.xyz;
+    n.ref1 = floatBitsToUint(c.w);
+    n.hi1 = d.xyz;
+    n.count1 = floatBitsToUint(d.w);
+    return n;
+}
+
 bool bvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
     hit.t = ray.tmax;
     hit.instance = 0u;
@@ -64,7 +81,7 @@ bool bvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
             wr = watertight_ray(dir);
             entry = meshes[I.mesh].bvh_root;
         }
-        BvhNode n = bvh_nodes[entry];
+        BvhNode n = bvh_load_node(entry);
         float t0;
         float t1;
         bool hit0 = n.ref0 != BVH_EMPTY && intersect_aabb(org, inv_dir, n.lo0, n.hi0, tmax, t0);
@@ -76,14 +93,16 @@ bool bvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
                 uint first = c == 0u ? n.ref0 : n.ref1;
                 uint end = first + (c == 0u ? n.count0 : n.count1);
                 for (uint i = first; i < end; ++i) {
-                    BvhTriangle tri = bvh_triangles[i];
+                    vec4 a = bvh_triangle_words[3u * i];
+                    vec4 b = bvh_triangle_words[3u * i + 1u];
+                    vec4 c = bvh_triangle_words[3u * i + 2u];
                     vec3 tuv;
-                    if (!intersect_triangle(org, wr, tri.v0, tri.v1, tri.v2, tmax, tuv)) continue;
+                    if (!intersect_triangle(org, wr, a.xyz, b.xyz, c.xyz, tmax, tuv)) continue;
                     found = true;
                     tmax = tuv.x;
                     hit.t = tuv.x;
                     hit.instance = inst;
-                    hit.primitive = tri.primitive;
+                    hit.primitive = floatBitsToUint(a.w);
                     hit.bary = vec2(tuv.y, tuv.z);
                     if (any_hit) return true;
                 }

@@ -122,4 +122,13 @@ void record_compute_barrier(VkCommandBuffer cmd) {
                          1, &b, 0, nullptr, 0, nullptr);
 }
 
+void record_host_read_barrier(VkCommandBuffer cmd) {
+    VkMemoryBarrier b{};
+    b.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
+    b.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;
+    b.dstAccessMask = VK_ACCESS_HOST_READ_BIT;
+    vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_TRANSFER_BIT, VK_PIPELINE_STAGE_HOST_BIT, 0, 1, &b,
+                         0, nullptr, 0, nullptr);
+}
+
 } // namespace tp

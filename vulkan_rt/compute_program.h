@@ -41,4 +41,7 @@ class ComputeProgram {
 // transfers (the read-back copy).
 void record_compute_barrier(VkCommandBuffer cmd);
 
+// Makes transfer writes (a read-back copy) visible to the host once the submission completes.
+void record_host_read_barrier(VkCommandBuffer cmd);
+
 } // namespace tp

@@ -112,6 +112,7 @@ RenderResult render_compute(const VulkanContext& ctx, const FlatScene& scene,
         const VkBufferCopy a{0, 0, accum_bytes}, c{0, accum_bytes, counter_bytes};
         vkCmdCopyBuffer(cmd, accum.handle(), host.handle(), 1, &a);
         vkCmdCopyBuffer(cmd, counters.handle(), host.handle(), 1, &c);
+        record_host_read_barrier(cmd);
     });
     const auto* pixels = static_cast<const PixelAccum*>(host.mapped());
     uint32_t words[COUNTER_WORDS];

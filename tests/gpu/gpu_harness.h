@@ -1,0 +1,44 @@
+// Runs test compute shaders on the Vulkan device the suite uses (lavapipe in CI). One context
+// per test process; CTest sets TWINPATH_VALIDATION=1, so the validation layer watches every
+// call and validation_messages() must stay 0.
+#pragma once
+
+#include "vulkan_rt/context.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+namespace tp::test {
+
+VulkanContext& gpu_context();
+uint64_t validation_messages();
+
+struct HostBytes {
+    const void* data;
+    size_t bytes;
+};
+
+template <typename T>
+HostBytes bytes_of(const std::vector<T>& v) {
+    return {v.data(), v.size() * sizeof(T)};
+}
+
+// Dispatches `groups` workgroups of `spirv` with storage buffers bound in order: first the
+// inputs (uploaded), then outputs of the given sizes (zero-filled), and returns the outputs.
+std::vector<std::vector<uint8_t>> run_shader(const uint32_t* spirv, size_t spirv_bytes,
+                                             const std::vector<HostBytes>& inputs,
+                                             const std::vector<size_t>& output_bytes,
+                                             const void* push, uint32_t push_bytes,
+                                             uint32_t groups);
+
+// The output as an array of T.
+template <typename T>
+std::vector<T> as_vector(const std::vector<uint8_t>& bytes) {
+    std::vector<T> v(bytes.size() / sizeof(T));
+    std::memcpy(v.data(), bytes.data(), v.size() * sizeof(T));
+    return v;
+}
+
+} // namespace tp::test

@@ -1,0 +1,718 @@
+// Every function of common/shared/ run in a compute shader and in C++ on the same random
+// inputs (function_table.h holds the one dispatch both compile), compared per function:
+// bit-exact where the function is integer or built only from correctly rounded operations,
+// otherwise within a tolerance derived from the Vulkan precision requirements (tolerance.h)
+// for that function's operations, justified next to each case.
+#include "function_inputs.h"
+#include "gpu_harness.h"
+#include "tolerance.h"
+
+#include "shared_functions.spv.h"
+
+#include <catch2/catch.hpp>
+
+#include <functional>
+
+namespace tp::test {
+namespace {
+
+constexpr uint32_t kInputsPerFunction = 10000;
+
+using Check = std::function<void(const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker&)>;
+
+struct Case {
+    uint32_t id;
+    const char* name;
+    Check check;
+    // Fraction of inputs that may disagree because a branch on a float comparison went the
+    // other way (operands within the tolerances of each other); 0 for branch-free functions.
+    double outliers = 0.0;
+};
+
+vec3 v3(const vec4& v) {
+    return vec3(v);
+}
+glm::dvec3 d3(const vec4& v) {
+    return glm::dvec3(v3(v));
+}
+double sum_abs(glm::dvec3 v) {
+    return std::abs(v.x) + std::abs(v.y) + std::abs(v.z);
+}
+
+// Whole outputs bit-identical.
+void same_all(const FnOut& c, const FnOut& g, Checker& k) {
+    for (int i = 0; i < 6; ++i)
+        for (int j = 0; j < 4; ++j) k.same("f", g.f[i][j], c.f[i][j]);
+    for (int j = 0; j < 4; ++j) k.exact("u", g.u[j], c.u[j]);
+}
+
+// ---- shared error models ---------------------------------------------------------------------
+// A unit vector put together from at most ~10 correctly rounded or contracted operations on
+// magnitudes <= 2 and normalized (inversesqrt 2 ulp): each component within 32 u.
+constexpr double kUnitAbs = 32.0 * kU;
+
+// Relative error of phong_power(c, n) = exp2(n log2 c) when c itself is uncertain by dc:
+// log2 c errs by log_abs(c) (scaled to log2) plus dc / (c ln 2), multiplied by n, plus the
+// product's rounding; exp2 turns an absolute error dx of its argument into a relative error
+// ln 2 dx and adds its own 3 + 2|x| ulp.
+double phong_power_rel(double c, double n, double dc) {
+    if (n == 0.0 || c <= 0.0) return 0.0;
+    const double x = n * std::log2(c);
+    const double dx =
+        n * (log_abs(c) / std::log(2.0) + dc / (c * std::log(2.0))) + kU * std::abs(x);
+    return std::log(2.0) * dx + exp_rel(x) + 2.0 * kU;
+}
+
+// A direction from sample_cosine_hemisphere / sample_uniform_sphere / sample_phong_lobe:
+// (cos(phi) s, sin(phi) s, z) with sin/cos off by 2^-11 and s, z off by ds, dz.
+void check_lobe_direction(Checker& k, vec3 gpu, vec3 cpu, double s, double ds, double dz) {
+    k.close("x", gpu.x, cpu.x, kSinCosAbs * s + ds + kU, 0);
+    k.close("y", gpu.y, cpu.y, kSinCosAbs * s + ds + kU, 0);
+    k.close("z", gpu.z, cpu.z, dz + kU, 0);
+}
+
+// Uncertainty of sqrt(y) when y is uncertain by dy: dy / (2 sqrt y), but never more than
+// sqrt(dy) (sqrt is not Lipschitz at 0), plus sqrt's own error.
+double sqrt_err(double y, double dy) {
+    const double r = std::sqrt(std::max(y, 0.0));
+    const double prop = r > 0.0 ? std::min(dy / (2.0 * r), std::sqrt(dy)) : std::sqrt(dy);
+    return prop + kSqrtRel * r;
+}
+
+// sample_phong_lobe's error chain in double: t = log(1 - u)/(n + 1), omc = -expm1(t),
+// sin = sqrt(omc (2 - omc)); returns (sin alpha, its error, error of cos alpha = 1 - omc).
+glm::dvec3 phong_lobe_errors(double u1, double n) {
+    const double one_minus_u = double(1.0f - float(u1));
+    const double L = std::log(one_minus_u);
+    const double dL = log_abs(one_minus_u) * std::log(2.0) + kU;
+    const double t = L / (n + 1.0);
+    const double dt = dL / (n + 1.0) + kDivRel * std::abs(t) + kU * std::abs(t);
+    const double omc = -std::expm1(t);
+    const double domc =
+        std::exp(t) * dt + (std::abs(t) < 1e-3 ? 8.0 * kU * omc : exp_rel(t) * std::exp(t) + kU);
+    const double s2 = omc * (2.0 - omc);
+    return {std::sqrt(std::max(s2, 0.0)), sqrt_err(s2, 2.0 * domc + kU), domc};
+}
+
+// Fresnel reflectance in double with cos_t perturbed by +-dct, and the spread that causes.
+double fresnel_d(double ci, double eta, double ct) {
+    const double rp = (eta * ci - ct) / (eta * ci + ct), rs = (ci - eta * ct) / (ci + eta * ct);
+    return 0.5 * (rp * rp + rs * rs);
+}
+double fresnel_tol(double ci, double eta) {
+    const double s = (1.0 - ci * ci) / (eta * eta);
+    if (s >= 1.0) return 0.0;
+    const double ds = 8.0 * kU * std::max(s, 1.0 / (eta * eta)) + kDivRel * s;
+    const double ct = std::sqrt(1.0 - s), dct = sqrt_err(1.0 - s, ds);
+    const double f = fresnel_d(ci, eta, ct);
+    const double spread = std::max(std::abs(fresnel_d(ci, eta, ct + dct) - f),
+                                   std::abs(fresnel_d(ci, eta, std::max(ct - dct, 0.0)) - f));
+    return spread + 16.0 * kU * f;
+}
+
+// Phong pdf in double and its tolerance given an uncertainty dc of cos(alpha).
+void phong_pdf_tol(const vec3& kd, const vec3& ks, double ns, const glm::dvec3& n,
+                   const glm::dvec3& wo, const glm::dvec3& wi, double dc, double& pdf,
+                   double& tol) {
+    const double d = double(kd.x + kd.y + kd.z) / 3.0, s = double(ks.x + ks.y + ks.z) / 3.0;
+    const double pd = d + s > 0 ? d / (d + s) : 1.0;
+    const glm::dvec3 r = glm::normalize(2.0 * glm::dot(n, wo) * n - wo);
+    const double ca = glm::dot(r, wi), ci = glm::dot(n, wi);
+    const double pp = ns == 0 ? 1.0 : (ca <= 0 ? 0.0 : std::pow(ca, ns));
+    const double diffuse = std::max(ci, 0.0) / M_PI, glossy = (ns + 1) / (2 * M_PI) * pp;
+    pdf = pd * diffuse + (1 - pd) * glossy;
+    const double dpd = 16.0 * kU * pd;
+    tol = pd * diffuse * 16.0 * kU + dpd * (diffuse + glossy) +
+          (1 - pd) * glossy * (phong_power_rel(ca, ns, dc) + 8.0 * kU) + 8.0 * kU * diffuse +
+          (ns + 1) * kFlushAbs;
+}
+
+// ---- the cases -------------------------------------------------------------------------------
+std::vector<Case> cases() {
+    std::vector<Case> c;
+    const Check exact = [](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+        same_all(cpu, gpu, k);
+    };
+
+    // min/max, comparisons, integer arithmetic and bit operations are exact in both.
+    c.push_back({FN_MAX3, "max3", exact});
+    // (x + y + z) * (1/3): three correctly rounded operations, none contractible.
+    c.push_back({FN_AVERAGE, "average", exact});
+    // Two contractible products: 2 u times the sum of the terms' magnitudes.
+    c.push_back({FN_LUMINANCE, "luminance",
+                 [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     const glm::dvec3 v = glm::abs(d3(x.f[0]));
+                     const double m = 0.2126 * v.x + 0.7152 * v.y + 0.0722 * v.z;
+                     k.close("luminance", gpu.f[0].x, cpu.f[0].x, 2.0 * kU * m, 0);
+                 }});
+    c.push_back({FN_IS_FINITE, "is_finite", exact}); // a bit test on the pattern
+    c.push_back({FN_IS_FINITE3, "is_finite3", exact});
+    c.push_back({FN_IS_BLACK, "is_black", exact});
+    // sqrt inherited from 1/inversesqrt.
+    c.push_back({FN_SAFE_SQRT, "safe_sqrt",
+                 [](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close("sqrt", gpu.f[0].x, cpu.f[0].x, 0, kSqrtRel);
+                 }});
+    // |x| < 1e-3: a contractible cubic (4 u); else exp(x) - 1 with exp's 3 + 2|x| ulp.
+    c.push_back({FN_EXPM1_PRECISE, "expm1_precise",
+                 [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     const double v = x.f[0].x;
+                     const double abs = std::abs(v) < 1e-3 ? 0.0 : exp_rel(v) * std::exp(v);
+                     k.close("expm1", gpu.f[0].x, cpu.f[0].x, abs + kU, 4.0 * kU);
+                 }});
+    // One division (|1/(s + n.z)| <= 1) and a few contractible products of magnitude <= 1.
+    c.push_back({FN_ORTHONORMAL_BASIS, "orthonormal_basis",
+                 [](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close3("t", v3(gpu.f[0]), v3(cpu.f[0]), 16.0 * kU, 0);
+                     k.close3("b", v3(gpu.f[1]), v3(cpu.f[1]), 16.0 * kU, 0);
+                 }});
+    // Two contractible sums of products per component.
+    c.push_back({FN_FRAME_TO_WORLD, "frame_to_world",
+                 [](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close3("v", v3(gpu.f[0]), v3(cpu.f[0]), 6.0 * kU, 0);
+                 }});
+    c.push_back({FN_PCG4D, "pcg4d", exact});
+    c.push_back({FN_UINT_TO_UNIT_FLOAT, "uint_to_unit_float", exact}); // exact conversion, 2^-24
+    c.push_back({FN_RNG_KEY, "rng_key", exact});
+    c.push_back({FN_RNG_GET, "rng_get", exact});
+    c.push_back({FN_RNG_BOUNCE_DIM, "rng_bounce_dim", exact});
+    c.push_back({FN_RNG_BOUNCE, "rng_bounce", exact});
+    // cos/sin(2 pi u2) (2^-11) times sin(theta) = sqrt(u1); cos(theta) = sqrt(1 - u1).
+    c.push_back({FN_SAMPLE_COSINE_HEMISPHERE, "sample_cosine_hemisphere",
+                 [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     const double s = std::sqrt(double(x.f[0].x));
+                     check_lobe_direction(k, v3(gpu.f[0]), v3(cpu.f[0]), s, kSqrtRel * s, kSqrtRel);
+                 }});
+    // One product by a constant after max(): correctly rounded.
+    c.push_back({FN_COSINE_HEMISPHERE_PDF, "cosine_hemisphere_pdf", exact});
+    c.push_back({FN_PHONG_POWER, "phong_power",
+                 [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close("pow", gpu.f[0].x, cpu.f[0].x, 0,
+                             phong_power_rel(x.f[0].x, x.f[0].y, 0.0));
+                 }});
+    c.push_back({FN_SAMPLE_PHONG_LOBE, "sample_phong_lobe",
+                 [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     const glm::dvec3 e = phong_lobe_errors(x.f[0].x, x.f[0].z);
+                     check_lobe_direction(k, v3(gpu.f[0]), v3(cpu.f[0]), e.x, e.y, e.z);
+                 }});
+    // (n + 1) / (2 pi) times phong_power: two more roundings; a cos^n that underflowed to a
+    // flushed denormal is scaled by up to n + 1.
+    c.push_back({FN_PHONG_LOBE_PDF, "phong_lobe_pdf",
+                 [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close("pdf", gpu.f[0].x, cpu.f[0].x, double(x.f[0].y + 1) * kFlushAbs,
+                             phong_power_rel(x.f[0].x, x.f[0].y, 0.0) + 4.0 * kU);
+                 }});
+    // z = 1 - 2 u1 exact; r = sqrt(1 - z^2) with a contractible z^2 (u) under the sqrt.
+    c.push_back({FN_SAMPLE_UNIFORM_SPHERE, "sample_uniform_sphere",
+                 [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     const double z = 1.0 - 2.0 * double(x.f[0].x), r2 = 1.0 - z * z;
+                     check_lobe_direction(k, v3(gpu.f[0]), v3(cpu.f[0]), std::sqrt(r2),
+                                          sqrt_err(r2, 2.0 * kU), 0.0);
+                 }});
+    // sqrt(u1) times correctly rounded factors.
+    c.push_back({FN_SAMPLE_UNIFORM_TRIANGLE, "sample_uniform_triangle",
+                 [](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close("b1", gpu.f[0].x, cpu.f[0].x, 0, kSqrtRel + 2.0 * kU);
+                     k.close("b2", gpu.f[0].y, cpu.f[0].y, 0, kSqrtRel + 2.0 * kU);
+                 }});
+    // u * float(n): one correctly rounded product, then truncation.
+    c.push_back({FN_ALIAS_SLOT, "alias_slot", exact});
+    c.push_back({FN_ALIAS_RESOLVE, "alias_resolve", exact});
+    c.push_back({FN_BSDF_SAMPLE_NONE, "bsdf_sample_none", exact});
+    c.push_back({FN_MIRROR_DIRECTION, "mirror_direction",
+                 [](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close3("r", v3(gpu.f[0]), v3(cpu.f[0]), kUnitAbs, 0);
+                 }});
+    // Two averages (exact as above) and one division.
+    c.push_back({FN_PHONG_DIFFUSE_PROBABILITY, "phong_diffuse_probability",
+                 [](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close("p", gpu.f[0].x, cpu.f[0].x, 0, kDivRel + 2.0 * kU);
+                 }});
+    // kd / pi plus the lobe: cos(alpha) = dot(mirror, wi) carries ~40 u, then phong_power.
+    const auto phong_eval_check = [](const FnIn& x, const FnOut& cpu, const FnOut& gpu,
+                                     Checker& k) {
+        const glm::dvec3 n = d3(x.f[2]), wo = d3(x.f[3]), wi = d3(x.f[4]);
+        const glm::dvec3 r = glm::normalize(2.0 * glm::dot(n, wo) * n - wo);
+        const double ca = glm::dot(r, wi), ns = x.f[0].w;
+        const double pp = ns == 0 ? 1.0 : (ca <= 0 ? 0.0 : std::pow(ca, ns));
+        const double lobe = (ns + 2) / (2 * M_PI) * pp;
+        for (int i = 0; i < 3; ++i) {
+            const double tol =
+                double(x.f[0][i]) / M_PI * 4.0 * kU + (ns + 2) * kFlushAbs +
+                double(x.f[1][i]) * lobe * (phong_power_rel(ca, ns, 40.0 * kU) + 8.0 * kU);
+            k.close("f", gpu.f[0][i], cpu.f[0][i], tol, 0);
+        }
+    };
+    const auto phong_pdf_check = [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+        double pdf, tol;
+        phong_pdf_tol(v3(x.f[0]), v3(x.f[1]), x.f[0].w, d3(x.f[2]), d3(x.f[3]), d3(x.f[4]),
+                      40.0 * kU, pdf, tol);
+        k.close("pdf", gpu.f[0].x, cpu.f[0].x, tol, 0);
+    };
+    // Branches: wi or wo on the horizon of n.
+    c.push_back({FN_PHONG_EVAL, "phong_eval", phong_eval_check, 1e-3});
+    c.push_back({FN_PHONG_PDF, "phong_pdf", phong_pdf_check, 1e-3});
+    // The sample's direction carries the sampler's error (cosine or Phong lobe) rotated into
+    // the frame (kUnitAbs more); pdf and weight are checked as functions of the GPU's own
+    // direction, so their tolerance does not have to absorb the 2^-11 of sin/cos. Branches:
+    // the lobe choice u_lobe < P_d and a glossy sample at the horizon.
+    const auto phong_sample_check = [](const vec3& kd, const vec3& ks, float ns, const FnIn& x,
+                                       const FnOut& cpu, const FnOut& gpu, Checker& k) {
+        k.exact("lobe", gpu.u.x, cpu.u.x);
+        if (cpu.u.x == LOBE_NONE || gpu.u.x != cpu.u.x) return;
+        double dir_tol;
+        if (cpu.u.x == LOBE_DIFFUSE) {
+            dir_tol = kSinCosAbs + 2.0 * kSqrtRel;
+        } else {
+            const glm::dvec3 e = phong_lobe_errors(x.f[5].y, ns);
+            dir_tol = kSinCosAbs * e.x + e.y + e.z;
+        }
+        k.close3("wi", v3(gpu.f[0]), v3(cpu.f[0]), dir_tol + 2.0 * kUnitAbs, 0);
+        const glm::dvec3 n = d3(x.f[2]), wo = d3(x.f[3]), wi = d3(gpu.f[0]);
+        double pdf, tol;
+        phong_pdf_tol(kd, ks, ns, n, wo, wi, 40.0 * kU, pdf, tol);
+        k.close("pdf", gpu.f[0].w, pdf, tol + 4.0 * kU * pdf, 0);
+        const vec3 f = phong_eval(kd, ks, ns, vec3(n), vec3(wo), vec3(wi));
+        for (int i = 0; i < 3; ++i) {
+            const double w = double(f[i]) * glm::dot(n, wi) / double(gpu.f[0].w);
+            k.close("weight", gpu.f[1][i], w, 0, tol / pdf + phong_power_rel(1, ns, 0) + 1e-4);
+        }
+    };
+    c.push_back(
+        {FN_PHONG_SAMPLE, "phong_sample",
+         [phong_sample_check](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+             phong_sample_check(v3(x.f[0]), v3(x.f[1]), x.f[0].w, x, cpu, gpu, k);
+         },
+         1e-3});
+    const auto mirror_sample_check = [](const FnOut& cpu, const FnOut& gpu, Checker& k) {
+        k.exact("lobe", gpu.u.x, cpu.u.x);
+        k.close3("wi", v3(gpu.f[0]), v3(cpu.f[0]), kUnitAbs, 0);
+        k.same("pdf", gpu.f[0].w, cpu.f[0].w);
+        k.same3("weight", v3(gpu.f[1]), v3(cpu.f[1]));
+    };
+    c.push_back({FN_MIRROR_SAMPLE, "mirror_sample",
+                 [mirror_sample_check](const FnIn&, const FnOut& cpu, const FnOut& gpu,
+                                       Checker& k) { mirror_sample_check(cpu, gpu, k); },
+                 1e-3});
+    // One division by eta^2, a sqrt with cancellation near total internal reflection (the
+    // tolerance propagates it through the formula in double), two quotients.
+    c.push_back({FN_FRESNEL_DIELECTRIC, "fresnel_dielectric",
+                 [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close("F", gpu.f[0].x, cpu.f[0].x,
+                             fresnel_tol(x.f[0].x, x.f[0].y) + 8.0 * kDivRel, 0);
+                 },
+                 1e-3});
+    // Reflect/refract chosen by u_lobe < F (branch); the direction is a normalized sum with
+    // cos_t's error (as in fresnel) scaled by |nw| = 1.
+    const auto dielectric_check = [](const FnIn& x, const FnOut& cpu, const FnOut& gpu,
+                                     Checker& k) {
+        k.exact("lobe", gpu.u.x, cpu.u.x);
+        if (gpu.u.x != cpu.u.x) return;
+        const double ior = x.f[1].w, co = glm::dot(d3(x.f[2]), d3(x.f[3]));
+        const double eta = co > 0 ? ior : 1.0 / ior, ci = std::abs(co);
+        const double s = (1.0 - ci * ci) / (eta * eta);
+        const double dct = s < 1.0 ? sqrt_err(1.0 - s, 8.0 * kU + kDivRel * s) : 0.0;
+        k.close3("wi", v3(gpu.f[0]), v3(cpu.f[0]), kUnitAbs + 2.0 * dct, 0);
+        const double ftol = fresnel_tol(ci, eta) + 8.0 * kDivRel + 4.0 * kU;
+        k.close("pdf", gpu.f[0].w, cpu.f[0].w, ftol, 0);
+        k.close3("weight", v3(gpu.f[1]), v3(cpu.f[1]), 0, 2.0 * kDivRel);
+    };
+    c.push_back({FN_DIELECTRIC_SAMPLE, "dielectric_sample", dielectric_check, 1e-3});
+    c.push_back({FN_MATERIAL_IS_DELTA, "material_is_delta", exact});
+    c.push_back({FN_BSDF_EVAL, "bsdf_eval", phong_eval_check, 1e-3}); // 0 unless Phong
+    c.push_back({FN_BSDF_PDF, "bsdf_pdf", phong_pdf_check, 1e-3});
+    c.push_back({FN_BSDF_SAMPLE, "bsdf_sample",
+                 [=](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     if (x.u.x == MATERIAL_PHONG)
+                         phong_sample_check(v3(x.f[0]), v3(x.f[1]), x.f[0].w, x, cpu, gpu, k);
+                     else if (x.u.x == MATERIAL_MIRROR)
+                         mirror_sample_check(cpu, gpu, k);
+                     else
+                         dielectric_check(x, cpu, gpu, k);
+                 },
+                 1e-3});
+    c.push_back({FN_LIGHT_SAMPLE_NONE, "light_sample_none", exact});
+    // d = p0 - p exact; dist = sqrt(contractible dot) (sqrt + u); wi = d / dist (3 ulp + that);
+    // I / dist^2 one division.
+    const auto point_check = [](const FnOut& cpu, const FnOut& gpu, Checker& k) {
+        k.close3("wi", v3(gpu.f[0]), v3(cpu.f[0]), 0, kSqrtRel + kDivRel + 2.0 * kU);
+        k.close("dist", gpu.f[0].w, cpu.f[0].w, 0, kSqrtRel + 2.0 * kU);
+        k.close3("radiance", v3(gpu.f[1]), v3(cpu.f[1]), 0, kDivRel + 4.0 * kU);
+        k.same("pdf", gpu.f[1].w, cpu.f[1].w);
+        k.same3("point", v3(gpu.f[2]), v3(cpu.f[2]));
+        k.exact("delta", gpu.u.x, cpu.u.x);
+    };
+    c.push_back({FN_SAMPLE_POINT_LIGHT, "sample_point_light",
+                 [=](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     point_check(cpu, gpu, k);
+                 }});
+    c.push_back({FN_SAMPLE_DIRECTIONAL_LIGHT, "sample_directional_light", exact});
+    // normalize(cross(e1, e2)): each cross component is a contractible difference of products
+    // (u times their magnitudes), relative to the cross product's length, then normalize.
+    const auto normal_tol = [](const FnIn& x) {
+        const glm::dvec3 e1 = d3(x.f[7]) - d3(x.f[6]), e2 = d3(x.f[8]) - d3(x.f[6]);
+        const double mag = (std::abs(e1.y * e2.z) + std::abs(e1.z * e2.y) + std::abs(e1.z * e2.x) +
+                            std::abs(e1.x * e2.z) + std::abs(e1.x * e2.y) + std::abs(e1.y * e2.x));
+        return 2.0 * kU * mag / glm::length(glm::cross(e1, e2)) + kUnitAbs;
+    };
+    c.push_back({FN_TRIANGLE_LIGHT_NORMAL, "triangle_light_normal",
+                 [=](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close3("n", v3(gpu.f[0]), v3(cpu.f[0]), normal_tol(x), 0);
+                 }});
+    c.push_back({FN_TRIANGLE_LIGHT_PDF, "triangle_light_pdf",
+                 [](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close("pdf", gpu.f[0].x, cpu.f[0].x, 0, kDivRel + 2.0 * kU);
+                 }});
+    // The point q = p0 + b1 e1 + b2 e2 (b from sqrt, contractible sums); the rest is checked
+    // against C++ evaluated at the GPU's q, like the point light; the pdf divides by
+    // cos_light, whose error relative to itself is the normal's error over cos_light.
+    const auto triangle_check = [=](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+        const glm::dvec3 p0 = d3(x.f[6]), e1 = d3(x.f[7]) - p0, e2 = d3(x.f[8]) - p0;
+        const double q_tol =
+            (kSqrtRel + 4.0 * kU) * (sum_abs(e1) + sum_abs(e2)) + 4.0 * kU * sum_abs(p0);
+        k.close3("point", v3(gpu.f[2]), v3(cpu.f[2]), q_tol, 0);
+        const glm::dvec3 d = d3(gpu.f[2]) - d3(x.f[0]);
+        const double dist = glm::length(d);
+        k.close3("wi", v3(gpu.f[0]), vec3(d / dist), 0, kSqrtRel + kDivRel + 4.0 * kU);
+        k.close("dist", gpu.f[0].w, dist, 0, kSqrtRel + 4.0 * kU);
+        const double cos_l = -glm::dot(glm::normalize(glm::cross(e1, e2)), d / dist);
+        const double pdf = cos_l > 0 ? dist * dist / (cos_l * double(x.f[6].w)) : 0.0;
+        const double rel = kDivRel + 2.0 * kSqrtRel + (normal_tol(x) + kUnitAbs) / cos_l;
+        k.close("pdf", gpu.f[1].w, pdf, 0, rel);
+        k.same3("radiance", v3(gpu.f[1]), v3(cpu.f[1]));
+        k.exact("delta", gpu.u.x, cpu.u.x);
+    };
+    c.push_back({FN_SAMPLE_TRIANGLE_LIGHT, "sample_triangle_light", triangle_check, 1e-3});
+    const auto sphere_check = [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+        const double z = 1.0 - 2.0 * double(x.f[1].x), r2 = 1.0 - z * z;
+        check_lobe_direction(k, v3(gpu.f[0]), v3(cpu.f[0]), std::sqrt(r2), sqrt_err(r2, 2.0 * kU),
+                             0.0);
+        k.same("dist", gpu.f[0].w, cpu.f[0].w);
+        k.same3("radiance", v3(gpu.f[1]), v3(cpu.f[1]));
+        k.same("pdf", gpu.f[1].w, cpu.f[1].w);
+        k.exact("delta", gpu.u.x, cpu.u.x);
+    };
+    c.push_back({FN_SAMPLE_CONSTANT_ENVIRONMENT, "sample_constant_environment", sphere_check});
+    // Products (exact) and one division.
+    c.push_back({FN_ENVIRONMENT_MAP_PDF, "environment_map_pdf",
+                 [](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close("pdf", gpu.f[0].x, cpu.f[0].x, 0, kDivRel);
+                 }});
+    c.push_back({FN_ENVIRONMENT_MAP_PIXEL_POINT, "environment_map_pixel_point",
+                 [](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close("s", gpu.f[0].x, cpu.f[0].x, 0, kDivRel);
+                     k.close("t", gpu.f[0].y, cpu.f[0].y, 0, kDivRel);
+                 }});
+    // rotate_y (sin/cos: 2^-11 per term), then phi = atan2 (4096 ulp plus the input error
+    // over the horizontal radius) and theta = acos (through atan2, plus the input error over
+    // sin theta, bounded near the poles by sqrt). Branch: the seam phi = +-pi.
+    const auto latlong_check = [](const glm::dvec3& d, double in_err, const FnOut& cpu,
+                                  const FnOut& gpu, Checker& k) {
+        const double rh = std::sqrt(d.x * d.x + d.z * d.z);
+        const double phi = std::atan2(d.x, -d.z);
+        k.close("s", gpu.f[0].x, cpu.f[0].x,
+                (kAtanRel * std::abs(phi) + std::min(2.0 * in_err / rh, M_PI)) / (2 * M_PI) +
+                    2.0 * kU,
+                0);
+        const double theta = std::acos(std::clamp(d.y, -1.0, 1.0));
+        const double dtheta = std::min(in_err / std::max(rh, 1e-30), std::sqrt(2.0 * in_err)) +
+                              sqrt_err(rh * rh, 4.0 * kU) + kAtanRel * theta;
+        k.close("t", gpu.f[0].y, cpu.f[0].y, dtheta / M_PI + 2.0 * kU, 0);
+    };
+    c.push_back({FN_ENVIRONMENT_MAP_COORDS, "environment_map_coords",
+                 [=](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     latlong_check(d3(x.f[0]), 2.0 * kSinCosAbs + 4.0 * kU, cpu, gpu, k);
+                 },
+                 1e-3});
+    c.push_back({FN_ENVIRONMENT_MAP_PIXEL, "environment_map_pixel", exact});
+    // latlong_to_direction then rotate_y: sin/cos errors of up to four factors; the pdf
+    // divides by sin(pi t) (2^-11 absolute).
+    c.push_back({FN_SAMPLE_ENVIRONMENT_MAP, "sample_environment_map",
+                 [](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close3("wi", v3(gpu.f[0]), v3(cpu.f[0]), 6.0 * kSinCosAbs, 0);
+                     const double st =
+                         std::sqrt(std::max(0.0, 1.0 - double(cpu.f[0].y) * double(cpu.f[0].y)));
+                     k.close("pdf", gpu.f[1].w, cpu.f[1].w, 0,
+                             4.0 * kSinCosAbs / std::max(st, 1e-3) + kDivRel);
+                     k.same("dist", gpu.f[0].w, cpu.f[0].w);
+                 },
+                 1e-3});
+    c.push_back({FN_SAMPLE_LIGHT, "sample_light",
+                 [=](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     if (x.u.y == LIGHT_POINT)
+                         point_check(cpu, gpu, k);
+                     else if (x.u.y == LIGHT_DIRECTIONAL)
+                         same_all(cpu, gpu, k);
+                     else if (x.u.y == LIGHT_TRIANGLE)
+                         triangle_check(x, cpu, gpu, k);
+                     else
+                         sphere_check(x, cpu, gpu, k);
+                 },
+                 1e-3});
+    c.push_back({FN_UV_TO_IMAGE, "uv_to_image", exact});
+    // Exact after folding the quotient's error back (texture.h).
+    c.push_back({FN_WRAP_TEXEL, "wrap_texel", exact});
+    // x = s w - 0.5 is contractible (u |s w|): the blend weights carry that, and floor() may
+    // flip at an integer (branch).
+    c.push_back({FN_TEXTURE_FOOTPRINT, "texture_footprint",
+                 [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     for (int i = 0; i < 4; ++i) k.exact("index", gpu.u[i], cpu.u[i]);
+                     k.close("fx", gpu.f[0].x, cpu.f[0].x,
+                             2.0 * kU * std::abs(double(x.f[0].x) * x.u.x), 0);
+                     k.close("fy", gpu.f[0].y, cpu.f[0].y,
+                             2.0 * kU * std::abs(double(x.f[0].y) * x.u.y), 0);
+                 },
+                 1e-3});
+    // Three contractible mixes a (1 - t) + b t.
+    c.push_back({FN_TEXTURE_BILERP, "texture_bilerp",
+                 [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     double m = 0;
+                     for (int i = 0; i < 4; ++i) m = std::max(m, sum_abs(d3(x.f[i])));
+                     k.close3("c", v3(gpu.f[0]), v3(cpu.f[0]), 8.0 * kU * m, 0);
+                 }});
+    // Products of two sin/cos values.
+    c.push_back({FN_LATLONG_TO_DIRECTION, "latlong_to_direction",
+                 [](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close3("d", v3(gpu.f[0]), v3(cpu.f[0]), 2.0 * kSinCosAbs + 4.0 * kU, 0);
+                 }});
+    c.push_back({FN_DIRECTION_TO_LATLONG, "direction_to_latlong",
+                 [=](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     latlong_check(d3(x.f[0]), 0.0, cpu, gpu, k);
+                 },
+                 1e-3});
+    c.push_back({FN_ROTATE_Y, "rotate_y",
+                 [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     const double m = std::abs(x.f[0].x) + std::abs(x.f[0].z);
+                     k.close3("d", v3(gpu.f[0]), v3(cpu.f[0]), kSinCosAbs * m + 4.0 * kU * m, 0);
+                 }});
+    // Affine maps: contractible dot products, u times the sum of the terms' magnitudes.
+    const auto affine_check = [](int row0, bool point) {
+        return [row0, point](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+            const glm::dvec3 v = d3(x.f[6]);
+            for (int r = 0; r < 3; ++r) {
+                const glm::dvec4 m(x.f[row0 + r]);
+                const double mag = std::abs(m.x * v.x) + std::abs(m.y * v.y) + std::abs(m.z * v.z) +
+                                   (point ? std::abs(m.w) : 0.0);
+                k.close("v", gpu.f[0][r], cpu.f[0][r], 4.0 * kU * mag, 0);
+            }
+        };
+    };
+    c.push_back({FN_INSTANCE_POINT_TO_WORLD, "instance_point_to_world", affine_check(0, true)});
+    c.push_back({FN_INSTANCE_VECTOR_TO_WORLD, "instance_vector_to_world", affine_check(0, false)});
+    c.push_back({FN_INSTANCE_POINT_TO_OBJECT, "instance_point_to_object", affine_check(3, true)});
+    c.push_back(
+        {FN_INSTANCE_VECTOR_TO_OBJECT, "instance_vector_to_object", affine_check(3, false)});
+    // Columns of the inverse weighted by n: the same contractible sums, transposed.
+    c.push_back({FN_INSTANCE_NORMAL_TO_WORLD, "instance_normal_to_world",
+                 [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     const glm::dvec3 v = d3(x.f[6]);
+                     for (int r = 0; r < 3; ++r) {
+                         const double mag = std::abs(double(x.f[3][r]) * v.x) +
+                                            std::abs(double(x.f[4][r]) * v.y) +
+                                            std::abs(double(x.f[5][r]) * v.z);
+                         k.close("n", gpu.f[0][r], cpu.f[0][r], 4.0 * kU * mag, 0);
+                     }
+                 }});
+    const auto bary_tol = [](const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& cc,
+                             double u, double v) {
+        return 4.0 * kU * (sum_abs(a) + u * sum_abs(b) + v * sum_abs(cc));
+    };
+    c.push_back({FN_BARYCENTRIC_MIX3, "barycentric_mix3",
+                 [=](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close3("p", v3(gpu.f[0]), v3(cpu.f[0]),
+                              bary_tol(d3(x.f[0]), d3(x.f[1]), d3(x.f[2]), x.f[3].x, x.f[3].y), 0);
+                 }});
+    c.push_back({FN_BARYCENTRIC_MIX2, "barycentric_mix2",
+                 [=](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     const double m = 4.0 * kU * (sum_abs(d3(x.f[0])) + sum_abs(d3(x.f[1])));
+                     k.close("u", gpu.f[0].x, cpu.f[0].x, m, 0);
+                     k.close("v", gpu.f[0].y, cpu.f[0].y, m, 0);
+                 }});
+    // p: the barycentric mix's error through the matrix plus the affine map's own; ng: the
+    // cross product's error (as for triangle_light_normal) through the normal matrix,
+    // relative to the result's length, then normalize.
+    const auto surface_check = [=](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k,
+                                   bool shading) {
+        const glm::dvec3 v0 = d3(x.f[6]), v1 = d3(x.f[7]), v2 = d3(x.f[8]);
+        const double u = x.f[9].x, v = x.f[9].y;
+        double mrow = 0, mag = 0;
+        for (int r = 0; r < 3; ++r)
+            mrow = std::max(mrow, sum_abs(d3(x.f[r])) + std::abs(double(x.f[r].w)));
+        const glm::dvec3 pm = (1 - u - v) * v0 + u * v1 + v * v2;
+        mag = mrow * (sum_abs(pm) + 1.0);
+        k.close3("p", v3(gpu.f[0]), v3(cpu.f[0]),
+                 4.0 * kU * mag + mrow * bary_tol(v0, v1, v2, u, v), 0);
+        const glm::dvec3 e1 = v1 - v0, e2 = v2 - v0, cr = glm::cross(e1, e2);
+        const glm::dmat3 nm(d3(x.f[3]), d3(x.f[4]), d3(x.f[5])); // rows as columns: M^-T
+        const glm::dvec3 nw = nm * cr;
+        double mi = 0;
+        for (int r = 3; r < 6; ++r) mi = std::max(mi, sum_abs(d3(x.f[r])));
+        const double cross_err = 2.0 * kU * (sum_abs(e1) * sum_abs(e2));
+        const double ng_tol =
+            (mi * cross_err + 4.0 * kU * mi * sum_abs(cr)) / glm::length(nw) + kUnitAbs;
+        k.close3("ng", v3(gpu.f[1]), v3(cpu.f[1]), ng_tol, 0);
+        if (!shading) {
+            k.close3("ns", v3(gpu.f[2]), v3(cpu.f[2]), ng_tol, 0);
+        } else {
+            const glm::dvec3 n0 = d3(x.f[10]), n1 = d3(x.f[11]), n2(x.f[6].w, x.f[7].w, x.f[8].w);
+            const glm::dvec3 nmix = (1 - u - v) * n0 + u * n1 + v * n2;
+            const double tol = (mi * (4.0 * kU * (sum_abs(n0) + sum_abs(n1) + sum_abs(n2))) +
+                                4.0 * kU * mi * sum_abs(nmix)) /
+                                   glm::length(nm * nmix) +
+                               kUnitAbs;
+            k.close3("ns", v3(gpu.f[2]), v3(cpu.f[2]), tol, 0);
+        }
+        k.same("u", gpu.f[3].x, cpu.f[3].x);
+        k.same("v", gpu.f[3].y, cpu.f[3].y);
+    };
+    c.push_back({FN_SURFACE_POINT, "surface_point",
+                 [=](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     surface_check(x, cpu, gpu, k, false);
+                 }});
+    // Branch: the interpolated normal's side of ng.
+    c.push_back({FN_SURFACE_SET_SHADING_NORMAL, "surface_set_shading_normal",
+                 [=](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     surface_check(x, cpu, gpu, k, true);
+                 },
+                 1e-3});
+    // Negations and copies chosen by the signs of two contractible dot products (branches).
+    c.push_back({FN_SURFACE_FACE_VIEWER, "surface_face_viewer", exact, 1e-3});
+    // Products exact, one division.
+    c.push_back({FN_POWER_HEURISTIC, "power_heuristic",
+                 [](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close("w", gpu.f[0].x, cpu.f[0].x, 0, kDivRel);
+                 }});
+    c.push_back({FN_EMISSION_MIS_WEIGHT, "emission_mis_weight",
+                 [](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close("w", gpu.f[0].x, cpu.f[0].x, 0, kDivRel);
+                 }});
+    // Signs of contractible dot products (branches).
+    c.push_back({FN_SCATTER_IS_CONSISTENT, "scatter_is_consistent", exact, 1e-3});
+    // Integer offsets of the float bits and a product by 2^-16 (exact): bit-identical, except
+    // where the side, the sign of a contractible dot(d, ng), flips (branch).
+    c.push_back({FN_SPAWN_RAY, "spawn_ray", exact, 1e-3});
+    // spawn_ray, then the direction to the offset target: length (sqrt of a contractible dot)
+    // and a division.
+    c.push_back({FN_SHADOW_RAY, "shadow_ray",
+                 [](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.same3("origin", v3(gpu.f[0]), v3(cpu.f[0]));
+                     k.close("tmax", gpu.f[0].w, cpu.f[0].w, 0, kSqrtRel + 2.0 * kU);
+                     k.close3("dir", v3(gpu.f[1]), v3(cpu.f[1]), 0, kSqrtRel + kDivRel + 4.0 * kU);
+                 },
+                 1e-3});
+    // normalize/cross as above; tan(theta) inherited from sin/cos: 2^-11 each, relative to
+    // sin and cos of the half angle; the aspect ratio one division.
+    c.push_back({FN_CAMERA_MAKE, "camera_make",
+                 [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     const double h = 0.5 * double(x.f[0].w) * M_PI / 180.0;
+                     const double tan_rel = kSinCosAbs / std::sin(h) + kSinCosAbs / std::cos(h);
+                     k.same3("eye", v3(gpu.f[0]), v3(cpu.f[0]));
+                     k.close("tan", gpu.f[0].w, cpu.f[0].w, 0, tan_rel + kDivRel);
+                     const glm::dvec3 f = glm::normalize(d3(x.f[1]) - d3(x.f[0]));
+                     const double s = glm::length(glm::cross(f, d3(x.f[2])));
+                     const double dir_tol = kUnitAbs + (2.0 * kU * 2.0 + kUnitAbs * 3.0) / s;
+                     k.close3("forward", v3(gpu.f[1]), v3(cpu.f[1]), kUnitAbs, 0);
+                     k.close("aspect", gpu.f[1].w, cpu.f[1].w, 0, kDivRel);
+                     k.close3("right", v3(gpu.f[2]), v3(cpu.f[2]), dir_tol, 0);
+                     k.close3("up", v3(gpu.f[3]), v3(cpu.f[3]), 2.0 * dir_tol, 0);
+                     k.exact("width", gpu.u.x, cpu.u.x);
+                     k.exact("height", gpu.u.y, cpu.u.y);
+                 }});
+    // u, v: one division each; the ray: contractible sum of three scaled unit vectors,
+    // normalized (errors relative to the unnormalized length).
+    c.push_back({FN_CAMERA_DIRECTION, "camera_direction",
+                 [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     const double t = x.f[0].w, a = x.f[1].w;
+                     const double u = 2.0 * double(x.f[4].x) / x.u.x - 1.0,
+                                  v = 1.0 - 2.0 * double(x.f[4].y) / x.u.y;
+                     const double mag = 1.0 + std::abs(u * t * a) + std::abs(v * t);
+                     const double len = std::sqrt(1.0 + u * t * a * u * t * a + v * t * v * t);
+                     const double tol = (4.0 * kU * mag + 2.0 * kDivRel * mag) / len + kUnitAbs;
+                     k.close3("d", v3(gpu.f[0]), v3(cpu.f[0]), tol, 0);
+                 }});
+    c.push_back({FN_OFFSET_COORDINATE, "offset_coordinate", exact});
+    c.push_back({FN_OFFSET_RAY_ORIGIN, "offset_ray_origin", exact});
+    c.push_back({FN_ROULETTE_SURVIVAL, "roulette_survival", exact});
+    // The decision compares exact values; the survivor's throughput is one division.
+    c.push_back({FN_ROULETTE_APPLY, "roulette_apply",
+                 [](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.exact("survived", gpu.u.x, cpu.u.x);
+                     k.close3("T", v3(gpu.f[0]), v3(cpu.f[0]), 0, kDivRel);
+                 }});
+    c.push_back({FN_RAY_INVERSE_DIRECTION, "ray_inverse_direction",
+                 [](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close3("inv", v3(gpu.f[0]), v3(cpu.f[0]), 0, kDivRel);
+                 }});
+    // Differences, products by 1/d, min/max, one product by a constant: no contractible
+    // pattern, so bit-exact.
+    c.push_back({FN_INTERSECT_AABB, "intersect_aabb", exact});
+    c.push_back({FN_WATERTIGHT_RAY, "watertight_ray",
+                 [](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     for (int i = 0; i < 3; ++i) k.exact("k", gpu.u[i], cpu.u[i]);
+                     k.close3("shear", v3(gpu.f[0]), v3(cpu.f[0]), 0, kDivRel);
+                 }});
+    // The shear's divisions (3 ulp) move the projected vertices by ~3 ulp of their largest
+    // coordinate; edge functions and T are contractible sums of products; barycentrics and t
+    // are quotients by det. The tolerance is that perturbation relative to |det|: the
+    // condition of the hit. Branch: rays through an edge.
+    c.push_back({FN_INTERSECT_TRIANGLE, "intersect_triangle",
+                 [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.exact("hit", gpu.u.x, cpu.u.x);
+                     if (!cpu.u.x || !gpu.u.x) return;
+                     const glm::dvec3 o = d3(x.f[0]), dir = d3(x.f[1]);
+                     const glm::dvec3 a = d3(x.f[2]) - o, b = d3(x.f[3]) - o, cc = d3(x.f[4]) - o;
+                     const double scale = std::max({sum_abs(a), sum_abs(b), sum_abs(cc)});
+                     const glm::dvec3 cr = glm::cross(b - a, cc - a);
+                     const double det =
+                         std::abs(glm::dot(cr, dir)) /
+                         std::max({std::abs(dir.x), std::abs(dir.y), std::abs(dir.z)});
+                     const double cond = scale * scale / det;
+                     const double tol = 64.0 * kU * cond;
+                     k.close("t", gpu.f[0].x, cpu.f[0].x, tol * scale, 0);
+                     k.close("u", gpu.f[0].y, cpu.f[0].y, tol, 0);
+                     k.close("v", gpu.f[0].z, cpu.f[0].z, tol, 0);
+                 },
+                 1e-3});
+    return c;
+}
+
+} // namespace
+
+TEST_CASE("every shared-header function agrees between C++ and the GPU", "[gpu]") {
+    const std::vector<Case> all = cases();
+    REQUIRE(all.size() == FN_COUNT);
+    std::vector<uint32_t> ids(kInputsPerFunction);
+    std::vector<FnIn> inputs(kInputsPerFunction);
+    const uint32_t count = kInputsPerFunction;
+    for (const Case& fc : all) {
+        InputGen gen(0x5eed0000u + fc.id);
+        for (uint32_t i = 0; i < count; ++i) {
+            ids[i] = fc.id;
+            make_input(fc.id, gen, inputs[i]);
+        }
+        const auto out = run_shader(tp_spirv_shared_functions, sizeof(tp_spirv_shared_functions),
+                                    {bytes_of(ids), bytes_of(inputs)}, {count * sizeof(FnOut)},
+                                    &count, sizeof(count), (count + 63) / 64);
+        const std::vector<FnOut> gpu = as_vector<FnOut>(out[0]);
+        Checker k;
+        double worst = 0.0;
+        uint32_t failures = 0;
+        std::string first;
+        for (uint32_t i = 0; i < count; ++i) {
+            const FnOut cpu = run_function(fc.id, inputs[i]);
+            k.reset_input();
+            fc.check(inputs[i], cpu, gpu[i], k);
+            if (!k.failed()) worst = std::max(worst, k.input_worst());
+            if (k.failed() && failures++ == 0) first = fmt::format("input {}: {}", i, k.message());
+        }
+        const uint32_t allowed = uint32_t(fc.outliers * count);
+        INFO(fc.name << ": " << failures << " of " << count << " inputs disagree (allowed "
+                     << allowed << "); first: " << first);
+        CHECK(failures <= allowed);
+        fmt::print("{:<28} worst |gpu - cpu| / tolerance {:.3g}, outliers {}\n", fc.name, worst,
+                   failures);
+    }
+    CHECK(validation_messages() == 0);
+}
+
+} // namespace tp::test
