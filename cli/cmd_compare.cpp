@@ -63,6 +63,7 @@ int run_statistical(const CompareArgs& a) {
     opt.tile = a.tile;
     opt.relative_floor = a.floor;
     const CompareResult r = compare_images(img_a, img_b, opt);
+    for (const std::string& w : r.warnings) fmt::print(stderr, "twinpath: warning: {}\n", w);
     write_json(a.json, compare_json(r, img_a, img_b));
     if (!a.report.empty()) write_report(a.report, r, img_a, img_b);
     fmt::print("{}\n", compare_verdict_line(r));

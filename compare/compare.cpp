@@ -4,7 +4,10 @@
 #include "compare/quality.h"
 #include "util/error.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
+#include <cmath>
 
 namespace tp {
 
@@ -24,7 +27,17 @@ CompareResult compare_images(const RgbImage& a, const RgbImage& b, const Compare
     r.floor_relative = opt.relative_floor;
     r.diff = compute_differences(a, b, opt.relative_floor);
     r.local = pixel_test(r.diff, r.local_level);
-    r.global = tile_test(r.diff, opt.tile);
+    for (const RgbImage* img : {&a, &b})
+        if (img->has_variance() && !img->spp)
+            r.warnings.push_back(fmt::format(
+                "{} has no twinpath:spp: its variance is taken as exact (normal p-values{})",
+                img->path, two ? "" : ", tiles not enlarged"));
+    int tile = opt.tile;
+    const RgbImage& noisy = a.has_variance() ? a : b;
+    if (!two && noisy.spp)
+        tile =
+            std::max(tile, int(std::ceil(std::sqrt(kReferenceTileSamples / double(*noisy.spp)))));
+    r.global = tile_test(r.diff, tile);
     r.p_value = two ? std::min(1.0, 2.0 * std::min(r.local.holm.p_value, r.global.p_value))
                     : r.global.p_value;
     r.different = r.p_value <= opt.alpha;

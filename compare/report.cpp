@@ -82,11 +82,14 @@ std::string numbers_table(const CompareResult& r) {
                     r.local.significant_pixels, r.local.holm.p_value, r.local.max_abs_z,
                     r.local.max_x, r.local.max_y, kChannel[r.local.max_channel]));
     row("global test",
-        fmt::format("chi-square of {} tiles of {}x{} per channel: R {:.1f} (p {:.3g}), G {:.1f} "
-                    "(p {:.3g}), B {:.1f} (p {:.3g}); Bonferroni p = {:.3g}",
-                    r.global.tiles(), r.global.tile, r.global.tile, r.global.chi2[0], r.global.p[0],
-                    r.global.chi2[1], r.global.p[1], r.global.chi2[2], r.global.p[2],
-                    r.global.p_value));
+        fmt::format(
+            "chi-square over {} tiles of {}x{} and 3 channels: X = {:.1f}, scaled by {:.2f} "
+            "for the channels' correlation (RG {:.2f}, RB {:.2f}, GB {:.2f}), {:.1f} dof: "
+            "p = {:.3g}. Per channel: R {:.1f}, G {:.1f}, B {:.1f} on {} dof",
+            r.global.tiles(), r.global.tile, r.global.tile, r.global.statistic, r.global.scale,
+            r.global.correlation[0], r.global.correlation[1], r.global.correlation[2], r.global.dof,
+            r.global.p_value, r.global.chi2[0], r.global.chi2[1], r.global.chi2[2],
+            r.global.tiles()));
     row("zero-variance floor",
         fmt::format("relative {}; {} pixel-channels had no variance in either image",
                     r.floor_relative, r.diff.at_floor));

@@ -46,7 +46,10 @@ void require_finite(const std::string& path, const ExrImage& img,
 } // namespace
 
 RgbImage load_rgb_image(const std::string& path) {
-    const ExrImage img = read_exr(path);
+    return rgb_image_from_exr(read_exr(path), path);
+}
+
+RgbImage rgb_image_from_exr(const ExrImage& img, const std::string& path) {
     for (const char* c : kColour)
         if (!img.has(c))
             input_error("{}: no channel {} (channels: {})", path, c, channel_list(img));

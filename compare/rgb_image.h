@@ -25,10 +25,16 @@ struct RgbImage {
     size_t pixels() const { return size_t(width) * size_t(height); }
 };
 
-// Reads R, G, B and variance.R/G/B. Rejects: a missing colour channel, variance channels
-// present for only some colours, NaN/Inf anywhere (counted per channel in the message),
-// negative variances, an spp attribute below 1.
+struct ExrImage;
+
+// Reads R, G, B and variance.R/G/B from a file (rgb_image_from_exr). Rejects: a missing colour
+// channel, variance channels present for only some colours, NaN/Inf anywhere (counted per channel
+// in the message), negative variances, an spp attribute below 1.
 RgbImage load_rgb_image(const std::string& path);
+
+// The same checks on an image already in memory (a render in the same process); `path` names
+// it in messages.
+RgbImage rgb_image_from_exr(const ExrImage& img, const std::string& path);
 
 // Both images must have the same size: throws InputError naming both files.
 void require_same_size(const RgbImage& a, const RgbImage& b);

@@ -58,13 +58,21 @@ nlohmann::json compare_json(const CompareResult& r, const RgbImage& a, const Rgb
     for (int c = 0; c < 3; ++c)
         chans[kChannel[c]] = {{"chi2", r.global.chi2[size_t(c)]},
                               {"p_value", r.global.p[size_t(c)]}};
-    j["global"] = {{"test", "chi-square of tile z per channel, Bonferroni over channels"},
-                   {"level", r.global_level},
-                   {"p_value", r.global.p_value},
-                   {"tile", r.global.tile},
-                   {"tiles", r.global.tiles()},
-                   {"dof", r.global.tiles()},
-                   {"channels", chans}};
+    j["global"] = {
+        {"test", "chi-square of all tile-channel z^2, scaled for the channels' correlation"},
+        {"level", r.global_level},
+        {"p_value", r.global.p_value},
+        {"tile", r.global.tile},
+        {"tiles", r.global.tiles()},
+        {"statistic", r.global.statistic},
+        {"scale", r.global.scale},
+        {"dof", r.global.dof},
+        {"correlation",
+         {{"RG", r.global.correlation[0]},
+          {"RB", r.global.correlation[1]},
+          {"GB", r.global.correlation[2]}}},
+        {"channels", chans}};
+    j["warnings"] = r.warnings;
     j["floor"] = {{"relative", r.floor_relative},
                   {"pixel_channels_without_variance", r.diff.at_floor}};
 

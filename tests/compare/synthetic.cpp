@@ -1,0 +1,76 @@
+#include "synthetic.h"
+
+#include "image/exr_io.h"
+#include "render/film.h"
+
+#include <cmath>
+#include <random>
+
+namespace tp::test {
+namespace {
+
+double draw(Noise noise, std::mt19937_64& rng) {
+    std::normal_distribution<double> normal;
+    std::uniform_real_distribution<double> uniform;
+    switch (noise) {
+    case Noise::Gaussian:
+        return 1.0 + 0.5 * normal(rng);
+    case Noise::Lognormal:
+        return std::exp(normal(rng) - 0.5);
+    case Noise::Pareto:
+        return 0.6 * std::pow(1.0 - uniform(rng), -1.0 / 2.5);
+    case Noise::Firefly:
+        return 0.5 * (1.0 + 0.3 * normal(rng)) + (uniform(rng) < 0.01 ? 50.0 : 0.0);
+    }
+    return 0.0;
+}
+
+} // namespace
+
+double true_mean(const SyntheticSpec& s, int channel, int x, int y) {
+    if (x < 2) return 0.0;
+    const double u = (x + 0.5) / s.width, v = (y + 0.5) / s.height;
+    const double tint[3] = {0.9, 0.6, 0.3};
+    return tint[channel] * (0.2 + 0.8 * u * (1.0 - 0.5 * v));
+}
+
+RgbImage synthetic_render(const SyntheticSpec& s, uint64_t seed, const Bias& bias) {
+    std::mt19937_64 rng(seed);
+    Film film(uint32_t(s.width), uint32_t(s.height));
+    for (int y = 0; y < s.height; ++y)
+        for (int x = 0; x < s.width; ++x) {
+            const bool in = x >= bias.x0 && x < bias.x1 && y >= bias.y0 && y < bias.y1;
+            const double k = in ? bias.scale : 1.0;
+            const glm::dvec3 mu(k * true_mean(s, 0, x, y), k * true_mean(s, 1, x, y),
+                                k * true_mean(s, 2, x, y));
+            const uint32_t p = uint32_t(y * s.width + x);
+            for (uint32_t i = 0; i < s.spp; ++i) {
+                glm::dvec3 yv;
+                yv.x = draw(s.noise, rng);
+                yv.y = s.correlated_channels ? yv.x : draw(s.noise, rng);
+                yv.z = s.correlated_channels ? yv.x : draw(s.noise, rng);
+                film.add_sample(p, mu * yv);
+            }
+        }
+    ExrImage img = film.to_exr();
+    img.integers["twinpath:spp"] = s.spp;
+    return rgb_image_from_exr(img, "synthetic-" + std::to_string(seed));
+}
+
+RgbImage synthetic_reference(const SyntheticSpec& s) {
+    RgbImage r;
+    r.path = "synthetic-truth";
+    r.width = s.width;
+    r.height = s.height;
+    for (int c = 0; c < 3; ++c) {
+        auto& m = r.mean[size_t(c)];
+        m.resize(r.pixels());
+        // float32 like every EXR value
+        for (int y = 0; y < s.height; ++y)
+            for (int x = 0; x < s.width; ++x)
+                m[size_t(y * s.width + x)] = double(float(true_mean(s, c, x, y)));
+    }
+    return r;
+}
+
+} // namespace tp::test

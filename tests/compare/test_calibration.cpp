@@ -1,0 +1,126 @@
+// Size of the test: false alarms under H0, from synthetic renderings with known noise
+// (synthetic.h). Every trial is an independent pair of images (or an image and the exact
+// truth); the number of rejections at level alpha must lie in the central 99% interval of
+// Binomial(n, alpha) where the test is exact, and below its upper end where it is only valid.
+#include "rates.h"
+#include "synthetic.h"
+
+#include "compare/compare.h"
+
+#include <catch2/catch.hpp>
+
+#include <array>
+#include <vector>
+
+using namespace tp;
+using namespace tp::test;
+
+namespace {
+
+struct TrialPValues {
+    std::vector<double> overall, local, global;
+};
+
+TrialPValues run_trials(const SyntheticSpec& spec, size_t n, bool reference_mode, uint64_t seed) {
+    TrialPValues t;
+    const RgbImage truth = synthetic_reference(spec);
+    for (size_t i = 0; i < n; ++i) {
+        const RgbImage a = synthetic_render(spec, seed + 2 * i);
+        const RgbImage b = reference_mode ? truth : synthetic_render(spec, seed + 2 * i + 1);
+        const CompareResult r = compare_images(a, b, CompareOptions{});
+        t.overall.push_back(r.p_value);
+        t.local.push_back(r.local.holm.p_value);
+        t.global.push_back(r.global.p_value);
+    }
+    return t;
+}
+
+size_t rejections(const std::vector<double>& p, double alpha) {
+    size_t k = 0;
+    for (double v : p) k += v <= alpha;
+    return k;
+}
+
+void check_exact(const std::string& name, const std::vector<double>& p, double alpha) {
+    const size_t k = rejections(p, alpha);
+    const CountInterval ci = binomial_interval99(p.size(), alpha);
+    INFO(describe_rate(name, k, p.size(), alpha));
+    CHECK(k >= ci.lo);
+    CHECK(k <= ci.hi);
+}
+
+void check_valid(const std::string& name, const std::vector<double>& p, double alpha) {
+    const size_t k = rejections(p, alpha);
+    INFO(describe_rate(name, k, p.size(), alpha));
+    CHECK(k <= binomial_interval99(p.size(), alpha).hi);
+}
+
+} // namespace
+
+TEST_CASE("size, two-sample, Gaussian noise: the whole test and both parts are exact",
+          "[compare][calibration]") {
+    // Independent channels: Holm over the pixel-channels is then as sharp as Bonferroni gets,
+    // and the whole test rejects at 1 - (1 - alpha/2)^2, within 0.3% of alpha.
+    SyntheticSpec spec;
+    spec.noise = Noise::Gaussian;
+    const TrialPValues t = run_trials(spec, 1000, false, 1000);
+    for (double alpha : {0.05, 0.01}) {
+        check_exact("whole test", t.overall, alpha);
+        check_exact("local (Holm over pixel-channels)", t.local, alpha);
+        check_exact("global (tile chi-square)", t.global, alpha);
+    }
+}
+
+TEST_CASE("size, two-sample, Gaussian noise with identical channels: the global test stays "
+          "exact",
+          "[compare][calibration]") {
+    // One draw for R, G and B (correlation 1): the scaled chi-square (tile_test.h) keeps its
+    // level; Holm counts each pixel three times and rejects at ~alpha/3, so the whole test is
+    // valid but below alpha.
+    SyntheticSpec spec;
+    spec.noise = Noise::Gaussian;
+    spec.correlated_channels = true;
+    const TrialPValues t = run_trials(spec, 400, false, 20000);
+    for (double alpha : {0.05, 0.01}) {
+        check_exact("global (tile chi-square)", t.global, alpha);
+        check_valid("whole test", t.overall, alpha);
+    }
+}
+
+TEST_CASE("size, two-sample, heavy-tailed noise: both parts stay valid", "[compare][calibration]") {
+    // Skewed samples (lognormal, Pareto with infinite third moment, rare 100x fireflies) with
+    // one draw per sample for R, G and B, as a path gives. A and B enter symmetrically, so a
+    // firefly in either image inflates its own variance estimate as much as the difference:
+    // the self-normalised statistics get lighter tails than the normal (Efron 1969, "Student's
+    // t-test under symmetry conditions") and the test rejects less often than alpha.
+    for (Noise noise : {Noise::Lognormal, Noise::Pareto, Noise::Firefly}) {
+        SyntheticSpec spec;
+        spec.noise = noise;
+        spec.correlated_channels = true;
+        const TrialPValues t = run_trials(spec, 400, false, 50000 + 10000 * uint64_t(noise));
+        INFO("noise model " << int(noise));
+        for (double alpha : {0.05, 0.01}) {
+            check_valid("global (tile chi-square)", t.global, alpha);
+            check_valid("whole test", t.overall, alpha);
+        }
+    }
+}
+
+TEST_CASE("size, reference mode: exact for Gaussian and heavy-tailed noise",
+          "[compare][calibration]") {
+    // 32x32 at 64 spp: 2^16 samples, so one tile per channel (kReferenceTileSamples).
+    for (Noise noise : {Noise::Gaussian, Noise::Lognormal, Noise::Pareto, Noise::Firefly}) {
+        SyntheticSpec spec;
+        spec.noise = noise;
+        spec.spp = 64;
+        const TrialPValues t = run_trials(spec, 300, true, 90000 + 10000 * uint64_t(noise));
+        INFO("noise model " << int(noise));
+        for (double alpha : {0.05, 0.01}) check_exact("whole test (global)", t.overall, alpha);
+        if (noise != Noise::Gaussian) {
+            // Why the per-pixel test is advisory here: one-sample t under skew (compare.h).
+            const size_t k = rejections(t.local, 0.01);
+            INFO(describe_rate("advisory per-pixel test", k, t.local.size(), 0.01));
+            CHECK(k > t.local.size() / 2);
+        }
+    }
+}

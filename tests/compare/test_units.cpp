@@ -1,0 +1,128 @@
+// The building blocks of compare against values computed independently: printed tables of
+// the t, normal and chi-square distributions, Holm's procedure worked by hand, tile sums and
+// metrics written out for tiny images.
+#include "compare/compare.h"
+#include "compare/distributions.h"
+#include "compare/holm.h"
+#include "compare/metrics.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+
+using namespace tp;
+
+namespace {
+
+// A w x h image with every pixel-channel equal to `mean` (and `var` if >= 0).
+RgbImage flat_image(int w, int h, double mean, double var, std::optional<int64_t> spp = {}) {
+    RgbImage img;
+    img.path = "flat";
+    img.width = w;
+    img.height = h;
+    for (size_t c = 0; c < 3; ++c) {
+        img.mean[c].assign(img.pixels(), mean);
+        if (var >= 0) img.var[c].assign(img.pixels(), var);
+    }
+    img.spp = spp;
+    return img;
+}
+
+} // namespace
+
+TEST_CASE("distribution tails match printed tables", "[compare][units]") {
+    // Student's t, 10 dof: t_0.975 = 2.228139 (e.g. Abramowitz & Stegun table 26.10).
+    CHECK(two_sided_p(2.228139, 10.0) == Approx(0.05).epsilon(1e-5));
+    CHECK(two_sided_p(-2.228139, 10.0) == Approx(0.05).epsilon(1e-5));
+    // Normal: z_0.975 = 1.959964; infinite dof is the normal.
+    CHECK(two_sided_p(1.959964, HUGE_VAL) == Approx(0.05).epsilon(1e-5));
+    // The t quantile maps to the normal quantile of the same tail.
+    CHECK(equivalent_normal(2.228139, 10.0) == Approx(1.959964).epsilon(1e-5));
+    CHECK(equivalent_normal(-2.228139, 10.0) == Approx(-1.959964).epsilon(1e-5));
+    // Chi-square, 10 dof: the 0.95 quantile is 18.307.
+    CHECK(chi2_upper(18.307, 10.0) == Approx(0.05).epsilon(1e-3));
+}
+
+TEST_CASE("Holm's step-down procedure, worked by hand", "[compare][units]") {
+    // m = 4, level 0.05. Sorted: 0.005 <= 0.05/4 reject; 0.01 <= 0.05/3 reject;
+    // 0.03 > 0.05/2 stop, so 0.04 is kept although 0.04 <= 0.05/1.
+    const HolmResult r = holm({0.01, 0.04, 0.03, 0.005}, 0.05);
+    CHECK(r.count == 2);
+    CHECK(r.rejected == std::vector<uint8_t>{1, 0, 0, 1});
+    CHECK(r.p_value == Approx(4 * 0.005));
+    // Nothing below level/m: nothing rejected, the family p-value is m min p capped at 1.
+    const HolmResult none = holm({0.5, 0.02, 0.9}, 0.05);
+    CHECK(none.count == 0);
+    CHECK(none.p_value == Approx(0.06));
+}
+
+TEST_CASE("Welch-Satterthwaite dof and the tile chi-square, by hand", "[compare][units]") {
+    // Equal variances v and spp n in both images: nu = (2v)^2 / (2 v^2/(n-1)) = 2(n-1).
+    const RgbImage a = flat_image(4, 4, 1.0, 0.01, 9), b = flat_image(4, 4, 1.0, 0.01, 9);
+    const Differences d = compute_differences(a, b, 0.0);
+    CHECK(d.dof(0, 0) == Approx(16.0));
+
+    // d = 0.1 everywhere, var 0.02 per pixel, tiles of 2x2 (4 pixels): z_T = 0.4 / sqrt(0.08)
+    // with nu_T = 4 * 16 = 64 mapped to the normal, K = 4 tiles per channel.
+    RgbImage shifted = flat_image(4, 4, 1.1, 0.01, 9);
+    const Differences d2 = compute_differences(shifted, b, 0.0);
+    const TileTest t = tile_test(d2, 2);
+    const double z = equivalent_normal(0.4 / std::sqrt(0.08), 64.0);
+    REQUIRE(t.tiles() == 4);
+    CHECK(t.chi2[1] == Approx(4 * z * z));
+    CHECK(t.p[1] == Approx(chi2_upper(4 * z * z, 4.0)));
+    // Channel correlation from the products d_c d_c' per tile: 4 * 0.01 / sqrt(0.08 * 0.08)
+    // = 0.5 for every pair, tr(R^2) = 3 + 6 * 0.25 = 4.5, g = 1.5, h = 12 / 1.5 = 8.
+    CHECK(t.correlation[0] == Approx(0.5));
+    CHECK(t.scale == Approx(1.5));
+    CHECK(t.dof == Approx(8.0));
+    CHECK(t.p_value == Approx(chi2_upper(3 * 4 * z * z / 1.5, 8.0)));
+}
+
+TEST_CASE("zero-variance pixels: equal is consistent, float rounding is tolerated, a real "
+          "difference is found",
+          "[compare][units]") {
+    CompareOptions opt;
+    const RgbImage a = flat_image(16, 16, 0.5, 0.0, 64);
+    CompareResult same = compare_images(a, flat_image(16, 16, 0.5, 0.0, 64), opt);
+    CHECK_FALSE(same.different);
+    CHECK(same.diff.at_floor == 3 * 16 * 16);
+
+    // 2^-20 relative (16 float32 ulps) is rounding, far inside the 1e-4 floor: z ~ 0.01.
+    const double ulp16 = 0.5 * std::ldexp(1.0, -20);
+    CHECK_FALSE(compare_images(a, flat_image(16, 16, 0.5 + ulp16, 0.0, 64), opt).different);
+
+    // 1% in every pixel with no noise at all: z = 0.005 / (1e-4 * 0.505 * sqrt 2) ~ 70.
+    CompareResult off = compare_images(a, flat_image(16, 16, 0.505, 0.0, 64), opt);
+    CHECK(off.different);
+    CHECK(off.local.holm.count == 3 * 16 * 16);
+}
+
+TEST_CASE("error metrics of a two-pixel image, by hand", "[compare][units]") {
+    RgbImage a = flat_image(2, 1, 0.0, 0.01), b = flat_image(2, 1, 0.0, 0.03);
+    for (size_t c = 0; c < 3; ++c) {
+        a.mean[c] = {1.1, 0.0};
+        b.mean[c] = {1.0, 0.1};
+    }
+    const ErrorMetrics m = error_metrics(a, b, b);
+    // d = (0.1, -0.1), r = (1, 0.1): MSE 0.01; relMSE (0.01/1.01 + 0.01/0.02) / 2;
+    // MAPE (0.1/1.01 + 0.1/0.11) / 2; bias 0; noise MSE 0.04; stderr sqrt(0.08)/2.
+    CHECK(m.channel[0].mse == Approx(0.01));
+    CHECK(m.channel[1].relmse == Approx((0.01 / 1.01 + 0.01 / 0.02) / 2));
+    CHECK(m.channel[2].mape == Approx((0.1 / 1.01 + 0.1 / 0.11) / 2));
+    CHECK(m.channel[0].bias == Approx(0.0).margin(1e-15));
+    CHECK(m.all.mse_noise == Approx(0.04));
+    CHECK(m.channel[0].bias_stderr == Approx(std::sqrt(0.08) / 2));
+}
+
+TEST_CASE("reference mode enlarges tiles to 2^16 samples and leaves pixels advisory",
+          "[compare][units]") {
+    const RgbImage noisy = flat_image(64, 64, 0.5, 0.001, 64);
+    const RgbImage exact = flat_image(64, 64, 0.5, -1.0);
+    const CompareResult r = compare_images(noisy, exact, CompareOptions{});
+    CHECK(r.mode == CompareMode::Reference);
+    // ceil(sqrt(65536 / 64)) = 32.
+    CHECK(r.global.tile == 32);
+    CHECK_FALSE(r.local_in_verdict());
+    CHECK(r.reference_is_a == false);
+}
