@@ -70,23 +70,29 @@ ConvergenceResult convergence(const RgbImage& reference, const std::vector<RgbIm
     std::sort(r.points.begin(), r.points.end(),
               [](const ConvergencePoint& a, const ConvergencePoint& b) { return a.spp < b.spp; });
 
-    // Weighted least squares for y = V x + B, x = 1/n: normal equations of the 2x2 system,
-    // whose inverse is also the covariance of (V, B) when the weights are 1/se^2. A point that
-    // matches the reference exactly has se = 0; its weight is capped at 1e24 times the others'
-    // (se floored at 1e-12 of the largest) to keep the system finite.
-    double max_se = 0;
-    for (const ConvergencePoint& p : r.points) max_se = std::max(max_se, p.excess_stderr);
-    if (max_se == 0) return r; // every rendering equals the reference: V = B = 0, p = 1
+    // Weighted least squares for y = V x + B, x = 1/n. Under H0 the standard error of y(n)
+    // falls like 1/n (y is a mean of squared errors ~ V/n), so the weights are n^2: fixed by
+    // the design, not by the noisy per-point estimates, which with fireflies are correlated
+    // with y itself (a point that missed a firefly has a small y and a small se, would get a
+    // large weight and pull V down and B up). The one scale s, se(y(n)) = s/n, is pooled
+    // over the points; kurtosis makes s*n larger at low spp, so pooling errs on the
+    // conservative side at high spp, where B is decided.
+    double s2 = 0;
+    for (const ConvergencePoint& p : r.points) {
+        const double sn = p.excess_stderr * double(p.spp);
+        s2 += sn * sn / double(r.points.size());
+    }
+    if (s2 == 0) return r; // every rendering equals the reference: V = B = 0, p = 1
     double sw = 0, sx = 0, sxx = 0, sy = 0, sxy = 0;
     for (const ConvergencePoint& p : r.points) {
-        const double se = std::max(p.excess_stderr, 1e-12 * max_se);
-        const double w = 1.0 / (se * se), x = 1.0 / double(p.spp);
+        const double n = double(p.spp), w = n * n / s2, x = 1.0 / n;
         sw += w;
         sx += w * x;
         sxx += w * x * x;
         sy += w * p.excess;
         sxy += w * x * p.excess;
     }
+    // The inverse of the normal equations' matrix is the covariance of (V, B).
     const double det = sw * sxx - sx * sx;
     r.V = (sw * sxy - sx * sy) / det;
     r.B = (sxx * sy - sx * sxy) / det;

@@ -8,8 +8,9 @@
 //
 // so an unbiased renderer gives y ∝ 1/n (a slope of -1 in log-log) and a biased one levels
 // off at the plateau B; sqrt(B) is the bias as a root-mean-square relative error.
-// V and B come from weighted least squares, each y(n) weighted by the inverse square of its
-// standard error (estimated from the spread of the per-pixel terms; pixels are independent).
+// V and B come from weighted least squares with weights n^2 (the standard error of y(n) ~ 1/n
+// under H0), scaled by the per-point standard errors pooled (from the spread of the per-pixel
+// terms; pixels are independent).
 // The renderings must be independent (different seeds): a progressive series that shares
 // samples correlates the y(n) and makes the standard errors too small.
 // Verdict: bias when B / se(B) exceeds the one-sided normal quantile at alpha.
