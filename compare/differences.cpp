@@ -35,12 +35,14 @@ Differences compute_differences(const RgbImage& a, const RgbImage& b, double rel
             scale += std::max(std::fabs(a.mean[c][i]), std::fabs(b.mean[c][i]));
         scale /= double(n);
         out.d[c].resize(n);
+        out.noise[c].resize(n);
         out.var[c].resize(n);
         out.welch[c].resize(n);
         for (size_t i = 0; i < n; ++i) {
             const double va = a.has_variance() ? a.var[c][i] : 0.0;
             const double vb = b.has_variance() ? b.var[c][i] : 0.0;
             out.d[c][i] = a.mean[c][i] - b.mean[c][i];
+            out.noise[c][i] = va + vb;
             out.var[c][i] =
                 va + vb + floor_variance(a.mean[c][i], b.mean[c][i], scale, relative_floor);
             out.welch[c][i] = va * va * ka + vb * vb * kb;

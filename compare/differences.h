@@ -14,7 +14,8 @@ constexpr double kDefaultRelativeFloor = 1e-4;
 struct Differences {
     int width = 0, height = 0;
     Planes d;            // a - b
-    Planes var;          // var_a + var_b + floor^2
+    Planes noise;        // var_a + var_b: the variance the images estimated
+    Planes var;          // noise + floor^2
     Planes welch;        // var_a^2/(n_a-1) + var_b^2/(n_b-1); 0 where the floor alone remains
     size_t at_floor = 0; // pixel-channels whose estimated variance is 0 in both images
 

@@ -14,13 +14,10 @@ TileTest tile_test(const Differences& d, int tile) {
     t.tiles_y = (d.height + tile - 1) / tile;
     const size_t k = size_t(t.tiles());
     const size_t pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
-    std::array<std::vector<double>, 3> sum_d, sum_var, sum_welch, sum_cross;
-    for (size_t c = 0; c < 3; ++c) {
-        sum_d[c].assign(k, 0.0);
-        sum_var[c].assign(k, 0.0);
-        sum_welch[c].assign(k, 0.0);
-        sum_cross[c].assign(k, 0.0);
-    }
+    std::array<std::vector<double>, 3> sum_d, sum_var, sum_noise, sum_welch, sum_cross;
+    for (size_t c = 0; c < 3; ++c)
+        for (auto* v : {&sum_d, &sum_var, &sum_noise, &sum_welch, &sum_cross})
+            (*v)[c].assign(k, 0.0);
     for (int y = 0; y < d.height; ++y)
         for (int x = 0; x < d.width; ++x) {
             const size_t i = size_t(y) * size_t(d.width) + size_t(x);
@@ -28,10 +25,16 @@ TileTest tile_test(const Differences& d, int tile) {
             for (size_t c = 0; c < 3; ++c) {
                 sum_d[c][j] += d.d[c][i];
                 sum_var[c][j] += d.var[c][i];
+                sum_noise[c][j] += d.noise[c][i];
                 sum_welch[c][j] += d.welch[c][i];
                 sum_cross[c][j] += d.d[pairs[c][0]][i] * d.d[pairs[c][1]][i];
             }
         }
+    // Without estimated variance anywhere, the floor is the only scale: count every tile.
+    const bool any_noise = std::any_of(sum_noise.begin(), sum_noise.end(), [](const auto& v) {
+        return std::any_of(v.begin(), v.end(), [](double x) { return x > 0.0; });
+    });
+    auto counted = [&](size_t c, size_t j) { return !any_noise || sum_noise[c][j] > 0.0; };
     for (size_t c = 0; c < 3; ++c) {
         t.z[c].resize(k);
         double chi2 = 0.0;
@@ -41,26 +44,29 @@ TileTest tile_test(const Differences& d, int tile) {
             const double dof = sum_welch[c][j] > 0.0 ? v * v / sum_welch[c][j] : HUGE_VAL;
             t.z[c][j] = equivalent_normal(z, dof);
             chi2 += t.z[c][j] * t.z[c][j];
+            t.counted[c] += counted(c, j);
         }
         t.chi2[c] = chi2;
-        t.p[c] = chi2_upper(chi2, double(k));
+        t.p[c] = chi2_upper(chi2, double(std::max<size_t>(t.counted[c], 1)));
         t.statistic += chi2;
     }
-    double trace_r2 = 3.0; // tr(R^2) = 3 + 2 sum of the squared off-diagonal correlations
+    double mean = 0.0, var = 0.0;
+    for (size_t c = 0; c < 3; ++c) mean += double(t.counted[c]);
+    var = 2.0 * mean;
     for (size_t q = 0; q < 3; ++q) {
+        const size_t c0 = pairs[q][0], c1 = pairs[q][1];
         double sum = 0.0;
-        size_t used = 0;
+        size_t both = 0;
         for (size_t j = 0; j < k; ++j) {
-            const double v = sum_var[pairs[q][0]][j] * sum_var[pairs[q][1]][j];
-            if (v <= 0.0) continue;
-            sum += sum_cross[q][j] / std::sqrt(v);
-            ++used;
+            if (!counted(c0, j) || !counted(c1, j)) continue;
+            sum += sum_cross[q][j] / std::sqrt(sum_var[c0][j] * sum_var[c1][j]);
+            ++both;
         }
-        t.correlation[q] = used ? std::clamp(sum / double(used), -1.0, 1.0) : 0.0;
-        trace_r2 += 2.0 * t.correlation[q] * t.correlation[q];
+        t.correlation[q] = both ? std::clamp(sum / double(both), -1.0, 1.0) : 0.0;
+        var += 4.0 * double(both) * t.correlation[q] * t.correlation[q];
     }
-    t.scale = trace_r2 / 3.0;
-    t.dof = 3.0 * double(k) / t.scale;
+    t.scale = var / (2.0 * mean);
+    t.dof = 2.0 * mean * mean / var;
     t.p_value = chi2_upper(t.statistic / t.scale, t.dof);
     return t;
 }

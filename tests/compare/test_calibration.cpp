@@ -87,12 +87,16 @@ TEST_CASE("size, two-sample, Gaussian noise with identical channels: the global 
     }
 }
 
-TEST_CASE("size, two-sample, heavy-tailed noise: both parts stay valid", "[compare][calibration]") {
+TEST_CASE("size, two-sample, heavy-tailed noise: the global test keeps its level, the whole "
+          "test stays valid",
+          "[compare][calibration]") {
     // Skewed samples (lognormal, Pareto with infinite third moment, rare 100x fireflies) with
     // one draw per sample for R, G and B, as a path gives. A and B enter symmetrically, so a
     // firefly in either image inflates its own variance estimate as much as the difference:
     // the self-normalised statistics get lighter tails than the normal (Efron 1969, "Student's
-    // t-test under symmetry conditions") and the test rejects less often than alpha.
+    // t-test under symmetry conditions"). Per pixel (N = spp) that makes Holm's deep-tail
+    // test far more conservative; per tile (N = 64 spp) the tile chi-square stays near its
+    // level; the whole test is valid but rejects less often than alpha.
     for (Noise noise : {Noise::Lognormal, Noise::Pareto, Noise::Firefly}) {
         SyntheticSpec spec;
         spec.noise = noise;
@@ -100,7 +104,7 @@ TEST_CASE("size, two-sample, heavy-tailed noise: both parts stay valid", "[compa
         const TrialPValues t = run_trials(spec, 400, false, 50000 + 10000 * uint64_t(noise));
         INFO("noise model " << int(noise));
         for (double alpha : {0.05, 0.01}) {
-            check_valid("global (tile chi-square)", t.global, alpha);
+            check_exact("global (tile chi-square)", t.global, alpha);
             check_valid("whole test", t.overall, alpha);
         }
     }

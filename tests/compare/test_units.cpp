@@ -69,6 +69,7 @@ TEST_CASE("Welch-Satterthwaite dof and the tile chi-square, by hand", "[compare]
     const TileTest t = tile_test(d2, 2);
     const double z = equivalent_normal(0.4 / std::sqrt(0.08), 64.0);
     REQUIRE(t.tiles() == 4);
+    CHECK(t.counted == std::array<size_t, 3>{4, 4, 4});
     CHECK(t.chi2[1] == Approx(4 * z * z));
     CHECK(t.p[1] == Approx(chi2_upper(4 * z * z, 4.0)));
     // Channel correlation from the products d_c d_c' per tile: 4 * 0.01 / sqrt(0.08 * 0.08)
@@ -96,6 +97,25 @@ TEST_CASE("zero-variance pixels: equal is consistent, float rounding is tolerate
     CompareResult off = compare_images(a, flat_image(16, 16, 0.505, 0.0, 64), opt);
     CHECK(off.different);
     CHECK(off.local.holm.count == 3 * 16 * 16);
+}
+
+TEST_CASE("tiles without estimated variance stay in the statistic but not in the dof",
+          "[compare][units]") {
+    // 4x4, tiles of 2x2: the left two tiles are constant (an emitter), the right two noisy
+    // with d = 0. K_c = 2, so X = 0 is compared with chi2 on 2 (scaled) dof, not 4.
+    RgbImage a = flat_image(4, 4, 1.0, 0.01, 9), b = flat_image(4, 4, 1.0, 0.01, 9);
+    for (size_t c = 0; c < 3; ++c)
+        for (size_t i = 0; i < 16; ++i)
+            if (i % 4 < 2) a.var[c][i] = b.var[c][i] = 0.0;
+    TileTest t = tile_test(compute_differences(a, b, kDefaultRelativeFloor), 2);
+    CHECK(t.counted == std::array<size_t, 3>{2, 2, 2});
+    CHECK(t.statistic == 0.0);
+    // The constant half differing by 1% is still found: z_T = 0.04 / (2e-4 sqrt(4 * 1.0201))
+    for (size_t c = 0; c < 3; ++c)
+        for (size_t i = 0; i < 16; ++i)
+            if (i % 4 < 2) a.mean[c][i] = 1.01;
+    t = tile_test(compute_differences(a, b, kDefaultRelativeFloor), 2);
+    CHECK(t.p_value < 1e-100);
 }
 
 TEST_CASE("error metrics of a two-pixel image, by hand", "[compare][units]") {
