@@ -78,7 +78,11 @@ inline vec3 latlong_to_direction(vec2 st) {
 inline vec2 direction_to_latlong(vec3 d) {
     // atan(0, 0) is undefined in GLSL: the poles get phi = 0.
     float phi = (d.x == 0.0f && d.z == 0.0f) ? 0.0f : atan(d.x, -d.z);
-    return vec2(0.5f + phi * INV_TWO_PI, acos(clamp(d.y, -1.0f, 1.0f)) * INV_PI);
+    float rho = length(vec2(d.x, d.z));
+    // theta = atan(rho, y) rather than acos(y): acos loses precision near the poles, where y is
+    // within a few float ulps of +-1 (at theta = 0.005 its error is 1e-3 relative, which the
+    // 1 / sin(theta) of environment_map_pdf carries into the pdf).
+    return vec2(0.5f + phi * INV_TWO_PI, atan(rho, d.y) * INV_PI);
 }
 
 // Right-handed rotation of d about +Y by angle (radians). A map rotated by a is looked up
