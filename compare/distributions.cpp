@@ -24,12 +24,13 @@ double normal_upper_quantile(double p) {
 
 double two_sided_p(double z, double dof) {
     const double t = std::fabs(z);
+    if (!std::isfinite(t)) return 0.0;
     if (!(dof < kNormalDof)) return 2.0 * normal_upper(t);
     return 2.0 * boost::math::cdf(boost::math::complement(boost::math::students_t(dof), t));
 }
 
 double equivalent_normal(double z, double dof) {
-    if (!(dof < kNormalDof) || z == 0.0) return z;
+    if (!(dof < kNormalDof) || z == 0.0 || !std::isfinite(z)) return z;
     const double upper =
         boost::math::cdf(boost::math::complement(boost::math::students_t(dof), std::fabs(z)));
     // An upper tail that underflows is beyond any threshold; |z| itself is then a fine stand-in

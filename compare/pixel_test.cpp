@@ -24,9 +24,12 @@ PixelTest pixel_test(const Differences& d, double level) {
         const size_t cc = size_t(c);
         t.z[cc].resize(n);
         for (size_t i = 0; i < n; ++i) {
-            // var is 0 only where a = b = 0 in a channel that is 0 everywhere: no evidence.
-            const double v = d.var[cc][i];
-            const double z = v > 0.0 ? d.d[cc][i] / std::sqrt(v) : 0.0;
+            // var is 0 only without noise and without floor (--floor 0, or a channel that is
+            // 0 everywhere): any difference is then infinitely significant.
+            const double v = d.var[cc][i], di = d.d[cc][i];
+            const double z = v > 0.0     ? di / std::sqrt(v)
+                             : di == 0.0 ? 0.0
+                                         : std::copysign(HUGE_VAL, di);
             t.z[cc][i] = z;
             if (2.0 * normal_upper(std::fabs(z)) < cutoff)
                 all_p[cc * n + i] = two_sided_p(z, d.dof(c, i));

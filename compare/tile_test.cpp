@@ -40,7 +40,10 @@ TileTest tile_test(const Differences& d, int tile) {
         double chi2 = 0.0;
         for (size_t j = 0; j < k; ++j) {
             const double v = sum_var[c][j];
-            const double z = v > 0.0 ? sum_d[c][j] / std::sqrt(v) : 0.0;
+            const double sd = sum_d[c][j];
+            const double z = v > 0.0     ? sd / std::sqrt(v)
+                             : sd == 0.0 ? 0.0
+                                         : std::copysign(HUGE_VAL, sd);
             const double dof = sum_welch[c][j] > 0.0 ? v * v / sum_welch[c][j] : HUGE_VAL;
             t.z[c][j] = equivalent_normal(z, dof);
             chi2 += t.z[c][j] * t.z[c][j];
