@@ -170,8 +170,11 @@ void write_report(const std::string& dir, const CompareResult& r, const RgbImage
          fmt::format("mean over R, G, B; full colour at &plusmn;{:.3g}", d_scale)},
         {"z.png", "per-pixel z",
          fmt::format("channel of largest |z|; full colour at |z| = {:.2f}; yellow: significant "
-                     "after Holm",
-                     z_full)},
+                     "after Holm{}",
+                     z_full,
+                     r.local_in_verdict() ? ""
+                                          : " (advisory: one-sample t, not calibrated for "
+                                            "skewed pixels)")},
         {"tiles.png", fmt::format("tile z ({}&times;{})", r.global.tile, r.global.tile),
          fmt::format("channel of largest |z|; full colour at |z| = {:.2f}", tile_full)},
     };
