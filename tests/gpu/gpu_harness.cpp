@@ -19,8 +19,8 @@ uint64_t validation_messages() {
 std::vector<std::vector<uint8_t>> run_shader(const uint32_t* spirv, size_t spirv_bytes,
                                              const std::vector<HostBytes>& inputs,
                                              const std::vector<size_t>& output_bytes,
-                                             const void* push, uint32_t push_bytes,
-                                             uint32_t groups) {
+                                             const void* push, uint32_t push_bytes, uint32_t groups,
+                                             const std::vector<VkBuffer>& device) {
     const VulkanContext& ctx = gpu_context();
     const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
                                      VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
@@ -35,9 +35,9 @@ std::vector<std::vector<uint8_t>> run_shader(const uint32_t* spirv, size_t spirv
         readback.emplace_back(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
     }
 
-    ComputeProgram program(ctx, spirv, spirv_bytes, uint32_t(inputs.size() + outputs.size()),
-                           push_bytes);
-    std::vector<VkBuffer> handles;
+    ComputeProgram program(ctx, spirv, spirv_bytes,
+                           uint32_t(device.size() + inputs.size() + outputs.size()), push_bytes);
+    std::vector<VkBuffer> handles = device;
     for (const Buffer& b : buffers) handles.push_back(b.handle());
     for (const Buffer& b : outputs) handles.push_back(b.handle());
     program.bind(handles);

@@ -25,13 +25,14 @@ HostBytes bytes_of(const std::vector<T>& v) {
     return {v.data(), v.size() * sizeof(T)};
 }
 
-// Dispatches `groups` workgroups of `spirv` with storage buffers bound in order: first the
-// inputs (uploaded), then outputs of the given sizes (zero-filled), and returns the outputs.
+// Dispatches `groups` workgroups of `spirv` with storage buffers bound in order: first
+// `device` (buffers already on the device), then the inputs (uploaded), then outputs of the
+// given sizes (zero-filled), and returns the outputs.
 std::vector<std::vector<uint8_t>> run_shader(const uint32_t* spirv, size_t spirv_bytes,
                                              const std::vector<HostBytes>& inputs,
                                              const std::vector<size_t>& output_bytes,
-                                             const void* push, uint32_t push_bytes,
-                                             uint32_t groups);
+                                             const void* push, uint32_t push_bytes, uint32_t groups,
+                                             const std::vector<VkBuffer>& device = {});
 
 // The output as an array of T.
 template <typename T>
