@@ -109,6 +109,11 @@ TEST_CASE("bad input: NaN, Inf and negative variance are counted and named",
     const std::string p_neg = f.write("neg.exr", neg);
     f.expect_bad(shell_quote(p_neg) + " " + shell_quote(f.good), {p_neg, "negative variance"});
 
+    ExrImage zero_spp = small_image(true);
+    zero_spp.integers["twinpath:spp"] = 0;
+    const std::string p_zero = f.write("zero_spp.exr", zero_spp);
+    f.expect_bad(shell_quote(f.good) + " " + shell_quote(p_zero), {p_zero, "twinpath:spp is 0"});
+
     // The JSON consumer is told why there is no result.
     const std::string json = f.dir + "/bad.json";
     f.compare(shell_quote(f.good) + " " + shell_quote(p_nan) + " --json " + shell_quote(json));
@@ -126,6 +131,8 @@ TEST_CASE("bad usage: arguments and options", "[compare][bad-input][cli]") {
     f.expect_bad(g + " " + g + " --alpha 1.5", {"--alpha"});
     f.expect_bad(g + " " + g + " --tolerance 0.1", {"--tolerance"}); // needs --exact
     f.expect_bad("--convergence " + g + " " + g, {"--reference"});
+    f.expect_bad("--exact " + g, {"--exact compares two images", "got 1"});
+    f.expect_bad("--convergence --reference " + g + " " + g, {"two or more spp", "got 1"});
 
     // --convergence: every image needs its spp, and two different spp are needed.
     ExrImage no_spp = small_image(true);
