@@ -1,0 +1,336 @@
+// The Vulkan backend's host-side logic, without a device: VkResult -> error mapping (device
+// lost and out of memory become RuntimeError, exit code 3), device selection, mode selection,
+// batch planning, the BVH builder's invariants and the watertightness of the triangle test.
+#include "scene/flatten.h"
+#include "scene/generators.h"
+#include "shared/intersect.h"
+#include "shared/surface.h"
+#include "util/error.h"
+#include "vulkan_rt/batch_planner.h"
+#include "vulkan_rt/bvh_builder.h"
+#include "vulkan_rt/device_info.h"
+#include "vulkan_rt/vk_error.h"
+#include "vulkan_rt/vulkan_renderer.h"
+
+#include <catch2/catch.hpp>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <random>
+#include <set>
+
+using namespace tp;
+
+TEST_CASE("VkResult errors become RuntimeError with a clear message", "[gpu]") {
+    CHECK_NOTHROW(vk_check(VK_SUCCESS, "x"));
+    CHECK_NOTHROW(vk_check(VK_INCOMPLETE, "x")); // success codes are not errors
+    CHECK_THROWS_AS(vk_check(VK_ERROR_DEVICE_LOST, "submitting"), RuntimeError);
+    CHECK_THROWS_WITH(vk_check(VK_ERROR_DEVICE_LOST, "submitting"),
+                      Catch::Contains("VK_ERROR_DEVICE_LOST") &&
+                          Catch::Contains("device was lost") && Catch::Contains("submitting"));
+    CHECK_THROWS_AS(vk_check(VK_ERROR_OUT_OF_DEVICE_MEMORY, "allocating"), RuntimeError);
+    CHECK_THROWS_WITH(vk_check(VK_ERROR_OUT_OF_DEVICE_MEMORY, "allocating"),
+                      Catch::Contains("out of GPU memory"));
+    CHECK_THROWS_WITH(vk_check(VK_ERROR_OUT_OF_HOST_MEMORY, "mapping"),
+                      Catch::Contains("out of host memory"));
+    CHECK_THROWS_WITH(vk_check(VK_ERROR_INCOMPATIBLE_DRIVER, "creating the instance"),
+                      Catch::Contains("no usable Vulkan driver"));
+    CHECK_THROWS_WITH(vk_check(VkResult(-12345), "x"), Catch::Contains("VkResult -12345"));
+}
+
+namespace {
+
+DeviceInfo device(uint32_t index, const char* name, const char* type, bool compute = true) {
+    DeviceInfo d;
+    d.index = index;
+    d.name = name;
+    d.type = type;
+    if (!compute) d.compute_missing = "shaderFloat64";
+    return d;
+}
+
+} // namespace
+
+TEST_CASE("device selection by index, name substring or best type", "[gpu]") {
+    const std::vector<DeviceInfo> devices = {device(0, "llvmpipe (LLVM 15)", "cpu"),
+                                             device(1, "NVIDIA H100 PCIe", "discrete"),
+                                             device(2, "Old GPU", "integrated", false)};
+    CHECK(select_device(devices, "").index == 1); // discrete first
+    CHECK(select_device(devices, "0").index == 0);
+    CHECK(select_device(devices, "h100").index == 1); // case-insensitive
+    CHECK(select_device(devices, "LLVMPIPE").index == 0);
+    CHECK_THROWS_AS(select_device(devices, "99"), InputError);
+    CHECK_THROWS_WITH(select_device(devices, "99"),
+                      Catch::Contains("no Vulkan device with that index") &&
+                          Catch::Contains("1: NVIDIA H100 PCIe"));
+    CHECK_THROWS_AS(select_device(devices, "radeon"), InputError);
+    CHECK_THROWS_AS(select_device(devices, "2"), RuntimeError); // cannot run compute mode
+    CHECK_THROWS_WITH(select_device(devices, "old"), Catch::Contains("shaderFloat64"));
+    CHECK_THROWS_AS(select_device({}, ""), RuntimeError);
+    CHECK_THROWS_WITH(select_device({}, ""), Catch::Contains("no Vulkan device"));
+}
+
+TEST_CASE("modes a device supports and the mode a request resolves to", "[gpu]") {
+    DeviceCaps caps;
+    caps.api_version = VK_API_VERSION_1_2;
+    caps.float64 = caps.scalar_layout = caps.subgroup_arithmetic = caps.compute_queue = true;
+    caps.max_storage_buffers = 32;
+    CHECK(compute_mode_missing(caps).empty());
+    CHECK_FALSE(pipeline_mode_supported(caps));
+    caps.extensions = {"VK_KHR_ray_tracing_pipeline", "VK_KHR_acceleration_structure",
+                       "VK_KHR_buffer_device_address"};
+    CHECK(pipeline_mode_supported(caps));
+    caps.float64 = false;
+    caps.api_version = VK_API_VERSION_1_1;
+    CHECK(compute_mode_missing(caps) == "Vulkan 1.2, shaderFloat64");
+
+    const DeviceInfo d = device(0, "x", "cpu");
+    CHECK(resolve_vk_mode("auto", d) == "compute");
+    CHECK(resolve_vk_mode("compute", d) == "compute");
+    CHECK_THROWS_AS(resolve_vk_mode("pipeline", d), InputError);
+}
+
+TEST_CASE("batches cover every pixel-sample exactly once, in passes", "[gpu]") {
+    const uint32_t W = 37, H = 23, spp = 300;
+    BatchPlanner plan(W, H, spp, 0.1);
+    std::vector<uint32_t> samples(W * H, 0);
+    uint64_t last_work = plan.work();
+    double last_fraction = 0.0;
+    int batch_count = 0;
+    std::mt19937 rng(3);
+    while (!plan.done()) {
+        const Batch b = plan.next();
+        REQUIRE(b.sample_count >= 1);
+        REQUIRE(b.sample_count <= BatchPlanner::kMaxSamplesPerBatch);
+        REQUIRE(b.row_begin < b.row_end);
+        REQUIRE(b.row_end <= H);
+        for (uint32_t y = b.row_begin; y < b.row_end; ++y)
+            for (uint32_t x = 0; x < W; ++x) {
+                REQUIRE(samples[y * W + x] == b.sample_begin); // in order, no gap, no overlap
+                samples[y * W + x] += b.sample_count;
+            }
+        // Simulated submissions: a throughput that varies by 2x between batches.
+        const double work = double(W) * (b.row_end - b.row_begin) * b.sample_count;
+        plan.completed(b, work / (1e5 * (1.0 + std::uniform_real_distribution<>(0, 1)(rng))));
+        CHECK(plan.work() <= 4 * last_work); // adapts by at most 4x per submission
+        CHECK(4 * plan.work() >= last_work);
+        CHECK(plan.fraction_done() >= last_fraction);
+        last_work = plan.work();
+        last_fraction = plan.fraction_done();
+        ++batch_count;
+    }
+    for (uint32_t s : samples) CHECK(s == spp);
+    CHECK(plan.samples_done() == spp);
+    CHECK(plan.fraction_done() == Approx(1.0));
+    CHECK(plan.at_pass_boundary());
+    CHECK(batch_count > 1);
+}
+
+TEST_CASE("a slow device gets bands of rows, a fast one several samples per pixel", "[gpu]") {
+    BatchPlanner slow(1000, 1000, 4, 0.1);
+    Batch b = slow.next();
+    CHECK(b.sample_count == 1);
+    CHECK(b.row_end - b.row_begin < 1000); // 16384 pixel-samples: 16 rows
+    BatchPlanner fast(64, 64, 1000, 0.1);
+    for (int i = 0; i < 10; ++i) { // 10^9 pixel-samples per second
+        b = fast.next();
+        fast.completed(b, double(64 * (b.row_end - b.row_begin) * b.sample_count) * 1e-9);
+    }
+    CHECK(fast.next().sample_count ==
+          std::min(BatchPlanner::kMaxSamplesPerBatch, 1000 - fast.samples_done()));
+}
+
+namespace {
+
+// Two meshes (an icosphere and a box, the box unused twice) and instances of both, one mesh
+// without triangles.
+FlatScene bvh_scene() {
+    Scene s;
+    s.path = "bvh";
+    Material m = default_material();
+    s.materials = {m};
+    s.material_names = {"m"};
+    s.meshes = {make_icosphere(3, false), make_box()};
+    for (int i = 0; i < 40; ++i) {
+        Object o;
+        o.mesh = uint32_t(i % 3 == 0);
+        o.transform = glm::scale(
+            glm::translate(glm::mat4(1.0f), vec3(float(i % 7), float(i / 7), 0.0f)), vec3(0.3f));
+        s.objects.push_back(o);
+    }
+    s.camera.given = true;
+    s.camera.eye = vec3(3, 3, 20);
+    s.camera.target = vec3(3, 3, 0);
+    s.settings.width = s.settings.height = 4;
+    return flatten(s);
+}
+
+bool contains(vec3 lo, vec3 hi, vec3 p) {
+    return glm::all(glm::lessThanEqual(lo, p)) && glm::all(glm::lessThanEqual(p, hi));
+}
+
+struct Walk {
+    const BvhBuild& bvh;
+    std::multiset<uint32_t> items;
+    // Visits the subtree of node `n`, checking that every child's box holds its content.
+    void bottom(uint32_t n, const FlatScene& scene, uint32_t mesh) {
+        const BvhNode& node = bvh.nodes[n];
+        for (int c = 0; c < 2; ++c) {
+            const uint32_t ref = c ? node.ref1 : node.ref0, count = c ? node.count1 : node.count0;
+            const vec3 lo = c ? node.lo1 : node.lo0, hi = c ? node.hi1 : node.hi0;
+            if (ref == BVH_EMPTY) continue;
+            if (count == 0) {
+                const BvhNode& child = bvh.nodes[ref];
+                for (int k = 0; k < 2; ++k) {
+                    if ((k ? child.ref1 : child.ref0) == BVH_EMPTY) continue;
+                    REQUIRE(contains(lo, hi, k ? child.lo1 : child.lo0));
+                    REQUIRE(contains(lo, hi, k ? child.hi1 : child.hi0));
+                }
+                bottom(ref, scene, mesh);
+                continue;
+            }
+            REQUIRE(count <= 4);
+            for (uint32_t i = ref; i < ref + count; ++i) {
+                const BvhTriangle& t = bvh.triangles[i];
+                const MeshInfo& m = scene.meshes[mesh];
+                REQUIRE(t.primitive < m.triangle_count);
+                const uvec3 tri = scene.triangles[m.first_triangle + t.primitive];
+                REQUIRE(t.v0 == scene.positions[m.first_vertex + tri.x]);
+                REQUIRE(t.v1 == scene.positions[m.first_vertex + tri.y]);
+                REQUIRE(t.v2 == scene.positions[m.first_vertex + tri.z]);
+                REQUIRE(
+                    (contains(lo, hi, t.v0) && contains(lo, hi, t.v1) && contains(lo, hi, t.v2)));
+                items.insert(t.primitive);
+            }
+        }
+    }
+};
+
+} // namespace
+
+TEST_CASE("BVH: every triangle once per mesh, boxes enclose their content", "[gpu]") {
+    const FlatScene scene = bvh_scene();
+    const BvhBuild bvh = build_bvh(scene);
+    REQUIRE(bvh.mesh_roots.size() == scene.meshes.size());
+    CHECK(bvh.top_root == 0);
+    for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
+        Walk w{bvh, {}};
+        w.bottom(bvh.mesh_roots[m], scene, m);
+        std::multiset<uint32_t> expected;
+        for (uint32_t t = 0; t < scene.meshes[m].triangle_count; ++t) expected.insert(t);
+        CHECK(w.items == expected);
+    }
+    // Instanced meshes are stored once.
+    uint64_t stored = 0;
+    for (const MeshInfo& m : scene.meshes) stored += m.triangle_count;
+    CHECK(bvh.triangles.size() == stored);
+    // The top level holds each instance once, in a box around its transformed triangles.
+    std::multiset<uint32_t> instances;
+    std::vector<uint32_t> stack = {bvh.top_root};
+    while (!stack.empty()) {
+        const BvhNode n = bvh.nodes[stack.back()];
+        stack.pop_back();
+        for (int c = 0; c < 2; ++c) {
+            const uint32_t ref = c ? n.ref1 : n.ref0, count = c ? n.count1 : n.count0;
+            if (ref == BVH_EMPTY) continue;
+            if (count == 0) {
+                stack.push_back(ref);
+                continue;
+            }
+            REQUIRE(count == 1);
+            instances.insert(ref);
+            const Instance& inst = scene.instances[ref];
+            const MeshInfo& m = scene.meshes[inst.mesh];
+            for (uint32_t v = 0; v < m.vertex_count; ++v)
+                REQUIRE(
+                    contains(c ? n.lo1 : n.lo0, c ? n.hi1 : n.hi0,
+                             instance_point_to_world(inst, scene.positions[m.first_vertex + v])));
+        }
+    }
+    CHECK(instances.size() == scene.instances.size());
+    CHECK(std::set<uint32_t>(instances.begin(), instances.end()).size() == instances.size());
+    CHECK(bvh.top_depth + bvh.bottom_depth + 2 <= BVH_STACK_SIZE);
+}
+
+TEST_CASE("watertight triangle test: no ray slips between triangles sharing an edge", "[gpu]") {
+    // A jittered grid of 16 x 16 quads, two triangles each, in a tilted plane; rays aimed at
+    // the shared vertices and at points of the shared edges (computed in float, so they lie
+    // on the edge up to rounding) must hit at least one triangle. A non-watertight test loses
+    // a fraction of these (Woop et al. 2013, fig. 1).
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(-0.3f, 0.3f);
+    const int N = 16;
+    std::vector<vec3> grid((N + 1) * (N + 1));
+    const glm::mat3 tilt =
+        glm::mat3(glm::rotate(glm::mat4(1.0f), 0.7f, glm::normalize(vec3(1, 2, 3))));
+    for (int j = 0; j <= N; ++j)
+        for (int i = 0; i <= N; ++i)
+            grid[j * (N + 1) + i] = tilt * vec3(float(i) + u(rng), float(j) + u(rng), 0.0f) * 0.37f;
+    std::vector<std::array<vec3, 3>> tris;
+    for (int j = 0; j < N; ++j)
+        for (int i = 0; i < N; ++i) {
+            const vec3 a = grid[j * (N + 1) + i], b = grid[j * (N + 1) + i + 1];
+            const vec3 c = grid[(j + 1) * (N + 1) + i], d = grid[(j + 1) * (N + 1) + i + 1];
+            tris.push_back({a, b, d});
+            tris.push_back({a, d, c});
+        }
+    const vec3 normal = tilt * vec3(0, 0, 1);
+    int misses = 0, rays = 0;
+    std::uniform_real_distribution<float> t01(0.0f, 1.0f);
+    for (int j = 1; j < N; ++j)
+        for (int i = 1; i < N; ++i) {
+            const vec3 v = grid[j * (N + 1) + i];
+            const vec3 nb[3] = {grid[j * (N + 1) + i + 1], grid[(j + 1) * (N + 1) + i],
+                                grid[(j + 1) * (N + 1) + i + 1]};
+            std::vector<vec3> targets = {v};
+            for (const vec3& w : nb) targets.push_back(v + t01(rng) * (w - v));
+            for (const vec3& target : targets) {
+                const vec3 org =
+                    target + 5.0f * glm::normalize(normal + 0.4f * vec3(u(rng), u(rng), u(rng)));
+                const vec3 dir = glm::normalize(target - org);
+                const WatertightRay wr = watertight_ray(dir);
+                bool hit = false;
+                for (const auto& t : tris) {
+                    vec3 tuv;
+                    hit = hit || intersect_triangle(org, wr, t[0], t[1], t[2], FLOAT_MAX, tuv);
+                }
+                misses += !hit;
+                ++rays;
+            }
+        }
+    INFO(misses << " of " << rays << " rays through shared vertices and edges missed");
+    CHECK(misses == 0);
+}
+
+TEST_CASE("slab test never rejects a box the exact test accepts", "[gpu]") {
+    // Rays grazing boxes: the exact (double) slab interval is compared with the float test;
+    // the float test may accept a few extra boxes (conservative) but must never miss one.
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    int missed = 0, exact_hits = 0;
+    for (int i = 0; i < 200000; ++i) {
+        vec3 lo(u(rng), u(rng), u(rng)),
+            hi = lo + vec3(0.5f + u(rng), 0.5f + u(rng), 0.5f + u(rng));
+        const vec3 org = 10.0f * vec3(u(rng), u(rng), u(rng));
+        const vec3 corner = vec3(i & 1 ? hi.x : lo.x, i & 2 ? hi.y : lo.y, i & 4 ? hi.z : lo.z);
+        vec3 dir = glm::normalize(corner + 1e-6f * vec3(u(rng), u(rng), u(rng)) - org);
+        if (i % 5 == 0) dir[i % 3] = 0.0f;
+        const glm::dvec3 o(org), d(dir);
+        double tn = 0.0, tf = 1e300;
+        for (int k = 0; k < 3; ++k) {
+            if (d[k] == 0.0) {
+                if (o[k] < double(lo[k]) || o[k] > double(hi[k])) tf = -1.0;
+                continue;
+            }
+            const double a = (double(lo[k]) - o[k]) / d[k], b = (double(hi[k]) - o[k]) / d[k];
+            tn = std::max(tn, std::min(a, b));
+            tf = std::min(tf, std::max(a, b));
+        }
+        if (!(tn <= tf)) continue;
+        ++exact_hits;
+        float t_enter;
+        missed += !intersect_aabb(org, ray_inverse_direction(dir), lo, hi, FLOAT_MAX, t_enter);
+    }
+    INFO(missed << " of " << exact_hits << " boxes the exact test accepts were rejected");
+    CHECK(exact_hits > 10000);
+    CHECK(missed == 0);
+}
