@@ -37,7 +37,7 @@ CompareResult compare_images(const RgbImage& a, const RgbImage& b, const Compare
     if (!two && noisy.spp)
         tile =
             std::max(tile, int(std::ceil(std::sqrt(kReferenceTileSamples / double(*noisy.spp)))));
-    r.global = tile_test(r.diff, tile);
+    r.global = tile_test(r.diff, std::min(tile, std::max(a.width, a.height)));
     r.p_value = two ? std::min(1.0, 2.0 * std::min(r.local.holm.p_value, r.global.p_value))
                     : r.global.p_value;
     r.different = r.p_value <= opt.alpha;

@@ -5,11 +5,14 @@
 #include "renders.h"
 
 #include "compare/compare.h"
+#include "image/exr_io.h"
 #include "support/test_paths.h"
 
 #include <catch2/catch.hpp>
+#include <fmt/format.h>
 
 #include <filesystem>
+#include <fstream>
 
 using namespace tp;
 using namespace tp::test;
@@ -79,4 +82,52 @@ TEST_CASE("cross-backend: every bundled scene passes CPU vs CPU at alpha 0.01 (d
         CHECK(c.result.value("verdict", "") == "consistent");
     }
     CHECK(scenes >= 4);
+}
+
+TEST_CASE("reference mode through the command line: a render against a 1024-spp reference "
+          "without variance",
+          "[compare][renders][cli]") {
+    // cornell 32x32: the reference has 64x the samples of the 16-spp images (its ignored
+    // noise inflates z^2 by 1/64) and its variance channels are removed, as an external
+    // reference would come. A depth-1 render (no indirect light) must be found, darker.
+    const std::string dir = temp_dir("reference-mode");
+    RenderSpec ref;
+    ref.width = ref.height = 32;
+    ref.spp = 1024;
+    ref.seed = 40;
+    render_cpu_file(ref, dir + "/ref_var.exr");
+    // A new image with the colour channels only (re-writing what read_exr returns would also
+    // copy the header's standard float attributes, which write_exr cannot re-insert).
+    const ExrImage with_var = read_exr(dir + "/ref_var.exr");
+    ExrImage exact;
+    exact.width = with_var.width;
+    exact.height = with_var.height;
+    for (const char* c : {"R", "G", "B"}) exact.channels[c] = with_var.channel(c);
+    write_exr(dir + "/ref.exr", exact);
+    RenderSpec img = ref;
+    img.spp = 16;
+    img.seed = 41;
+    render_cpu_file(img, dir + "/img.exr");
+    img.max_depth = 1;
+    render_cpu_file(img, dir + "/direct.exr");
+
+    auto compare = [&](const std::string& file) {
+        const ProcessResult r =
+            run(fmt::format("{} compare {} {} --json {}", shell_quote(twinpath_bin()),
+                            shell_quote(dir + "/" + file), shell_quote(dir + "/ref.exr"),
+                            shell_quote(dir + "/r.json")));
+        INFO(r.out);
+        return std::make_pair(r.exit_code, nlohmann::json::parse(std::ifstream(dir + "/r.json")));
+    };
+    const auto [ok_exit, ok] = compare("img.exr");
+    CHECK(ok_exit == 0);
+    CHECK(ok["mode"] == "reference");
+    CHECK(ok["local"]["in_verdict"] == false);
+    CHECK(ok["global"]["tile"] == 32); // ceil(sqrt(65536 / 16)) = 64: the whole image
+    CHECK(ok["metrics"]["reference"] == "b");
+    CHECK(ok["metrics"]["relmse"]["all"].get<double>() > 0.0);
+
+    const auto [bad_exit, bad] = compare("direct.exr");
+    CHECK(bad_exit == 1);
+    for (const char* c : {"R", "G", "B"}) CHECK(bad["metrics"]["bias"][c].get<double>() < 0.0);
 }
