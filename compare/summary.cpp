@@ -34,8 +34,6 @@ nlohmann::json compare_json(const CompareResult& r, const RgbImage& a, const Rgb
     j["b"] = image_json(b);
     j["width"] = r.diff.width;
     j["height"] = r.diff.height;
-    // NaN/Inf are rejected while loading (exit 2), so a result always has none.
-    j["nonfinite"] = {{"a", 0}, {"b", 0}};
 
     const size_t m = r.local.holm.rejected.size();
     j["local"] = {
