@@ -22,11 +22,13 @@ inline float cosine_hemisphere_pdf(float cos_theta) {
     return max(cos_theta, 0.0f) * INV_PI;
 }
 
-// cos(alpha)^n for the Phong lobe, defined for every exponent >= 0 (GLSL's pow(0, 0) is
-// undefined) and computed as exp2(n log2 c) like every GPU does.
+// max(cos(alpha), 0)^n for the Phong lobe: 0 outside the lobe's hemisphere for every
+// exponent, n = 0 included, because sample_phong_lobe never leaves it (cos(alpha) =
+// u^(1/(n+1)) > 0), and the pdf must be the sampler's density. Defined for every n >= 0
+// (GLSL's pow(0, 0) is undefined) and computed as exp2(n log2 c) like every GPU does.
 inline float phong_power(float cos_alpha, float n) {
-    if (n == 0.0f) return 1.0f;
     if (cos_alpha <= 0.0f) return 0.0f;
+    if (n == 0.0f) return 1.0f;
     return exp2(n * log2(cos_alpha));
 }
 
