@@ -44,6 +44,7 @@ TEST_CASE("Phong mixture sampling follows phong_pdf", "[chi2]") {
         {tp::vec3(0.2f), tp::vec3(0.7f), 10000.0f, 45.0, {1, 0, 0}},
         {tp::vec3(0.0f), tp::vec3(0.9f), 20.0f, 85.0, glm::normalize(glm::dvec3(0.1, 0.9, 0.2))},
         {tp::vec3(0.7f), tp::vec3(0.0f), 50.0f, 70.0, glm::normalize(glm::dvec3(-1, -1, 1))},
+        {tp::vec3(0.4f), tp::vec3(0.5f), 0.0f, 50.0, glm::normalize(glm::dvec3(0.5, 0.5, -0.5))},
     };
     int index = 0;
     for (const PhongCase& c : cases) {

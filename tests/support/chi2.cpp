@@ -269,6 +269,10 @@ SphereChart SphereChart::lobe(const glm::dvec3& axis, double s0, size_t rows, si
     const double ratio = 1.0 + 2.0 / s0;
     for (size_t i = 0; i < rows; ++i) s[i] = s0 * (std::pow(ratio, double(i) / double(rows)) - 1.0);
     s[rows] = 2.0;
+    // The edge nearest the plane perpendicular to the axis moves onto it.
+    *std::min_element(s.begin() + 1, s.end() - 1, [](double a, double b) {
+        return std::abs(a - 1.0) < std::abs(b - 1.0);
+    }) = 1.0;
     return chart_with_rows(axis, s, cols);
 }
 

@@ -120,7 +120,8 @@ struct SphereChart {
     // Rows logarithmic in s = 1 - cos(theta), s_k = s0 ((1 + 2 / s0)^(k / rows) - 1): cells of
     // width ~s0 at the axis growing geometrically to the antipode, so that a lobe of width s0
     // about the axis is resolved (a Phong lobe cos^n has 1 - cos(alpha) ~ 1 / n) while the
-    // grid still covers the whole sphere.
+    // grid still covers the whole sphere. The row edge nearest s = 1 is moved onto it, so that
+    // a pdf confined to the hemisphere about the axis has its edge on cell boundaries.
     static SphereChart lobe(const glm::dvec3& axis, double s0, size_t rows, size_t cols);
 
     glm::dvec2 coords(const glm::dvec3& w) const; // unit w -> (theta, phi)
