@@ -34,9 +34,17 @@ void write_exr(const std::string& path, const ExrImage& image) {
                               data.size(), image.width, image.height);
             header.channels().insert(name, Imf::Channel(Imf::FLOAT));
         }
-        for (const auto& [k, v] : image.strings) header.insert(k, Imf::StringAttribute(v));
-        for (const auto& [k, v] : image.integers) header.insert(k, Imf::IntAttribute(int(v)));
-        for (const auto& [k, v] : image.reals) header.insert(k, Imf::DoubleAttribute(v));
+        // Attributes every header has (pixelAspectRatio, screenWindowWidth, ...) are set by
+        // the Header constructor with their own types; read_exr returns them too, so they are
+        // skipped here rather than re-inserted with a different type, which OpenEXR rejects.
+        const Imf::Header standard(image.width, image.height);
+        auto own = [&](const std::string& k) { return standard.find(k) == standard.end(); };
+        for (const auto& [k, v] : image.strings)
+            if (own(k)) header.insert(k, Imf::StringAttribute(v));
+        for (const auto& [k, v] : image.integers)
+            if (own(k)) header.insert(k, Imf::IntAttribute(int(v)));
+        for (const auto& [k, v] : image.reals)
+            if (own(k)) header.insert(k, Imf::DoubleAttribute(v));
         Imf::OutputFile file(tmp.c_str(), header);
         Imf::FrameBuffer fb;
         for (const auto& [name, data] : image.channels)
