@@ -8,9 +8,11 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <fstream>
+#include <iterator>
 #include <map>
 #include <set>
 
@@ -108,14 +110,47 @@ class Reader {
     std::string file_;
 };
 
+// Byte offset of the first error in a JSON text, from nlohmann's SAX interface.
+struct ErrorOffset : json::json_sax_t {
+    size_t offset = 0;
+    bool null() override { return true; }
+    bool boolean(bool) override { return true; }
+    bool number_integer(number_integer_t) override { return true; }
+    bool number_unsigned(number_unsigned_t) override { return true; }
+    bool number_float(number_float_t, const string_t&) override { return true; }
+    bool string(string_t&) override { return true; }
+    bool binary(binary_t&) override { return true; }
+    bool start_object(std::size_t) override { return true; }
+    bool key(string_t&) override { return true; }
+    bool end_object() override { return true; }
+    bool start_array(std::size_t) override { return true; }
+    bool end_array() override { return true; }
+    bool parse_error(std::size_t position, const std::string&,
+                     const nlohmann::detail::exception&) override {
+        offset = position;
+        return false;
+    }
+};
+
 json parse_file(const std::string& path) {
     std::ifstream in(path);
     if (!in) input_error("{}: cannot open file", path);
+    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     try {
-        return json::parse(in);
+        return json::parse(text);
     } catch (const json::parse_error& e) {
         // nlohmann's message carries "at line L, column C".
         input_error("{}: malformed JSON: {}", path, e.what());
+    } catch (const json::out_of_range& e) {
+        // A number beyond double's range (1e999) is reported without a position; the SAX
+        // interface has its byte offset.
+        ErrorOffset where;
+        json::sax_parse(text, &where);
+        const size_t end = std::min(where.offset, text.size());
+        const size_t line = 1 + size_t(std::count(text.begin(), text.begin() + long(end), '\n'));
+        const size_t line_start = text.rfind('\n', end == 0 ? 0 : end - 1);
+        const size_t column = line_start == std::string::npos ? end : end - line_start - 1;
+        input_error("{}: malformed JSON at line {}, column {}: {}", path, line, column, e.what());
     }
 }
 
