@@ -154,6 +154,16 @@ json parse_file(const std::string& path) {
     }
 }
 
+// A texture file named by `field`: a file that exists but cannot be read is reported at the
+// field that names it, not only by its own path.
+Texture load_texture_at(const Reader& r, const fs::path& file, const std::string& field) {
+    try {
+        return load_texture(file.string());
+    } catch (const InputError& e) {
+        r.fail(field, e.what());
+    }
+}
+
 glm::mat4 read_transform(const Reader& r, const json& j, const std::string& field) {
     if (j.is_array()) { // 16 numbers, row-major
         if (j.size() != 16) r.fail(field, "a matrix needs 16 numbers (row-major 4x4)");
@@ -285,7 +295,7 @@ MeshRef read_mesh(const Reader& r, const json& j, const std::string& field, Scen
 Texture read_texture(const Reader& r, const json& j, const std::string& field) {
     if (j.contains("file")) {
         r.keys(j, field, {"file"});
-        return load_texture(r.file_path(j["file"], field + ".file").string());
+        return load_texture_at(r, r.file_path(j["file"], field + ".file"), field + ".file");
     }
     const std::string gen = r.string(r.required(j, field, "generator"), field + ".generator");
     const uint32_t size = j.contains("size") ? r.count(j["size"], field + ".size", 1, 8192) : 512;
@@ -496,7 +506,8 @@ Scene load_json_scene(const std::string& path, std::vector<std::string>& warning
             if (e.contains("file") == e.contains("texture"))
                 r.fail("environment", "a map needs exactly one of \"file\" and \"texture\"");
             if (e.contains("file")) {
-                Texture t = load_texture(r.file_path(e["file"], "environment.file").string());
+                Texture t = load_texture_at(r, r.file_path(e["file"], "environment.file"),
+                                            "environment.file");
                 t.name = "environment";
                 scene.textures.push_back(std::move(t));
                 scene.environment.texture = int(scene.textures.size() - 1);

@@ -98,7 +98,11 @@ void load_mtl(const fs::path& path, Scene& scene, std::map<std::string, uint32_t
         else if (key == "map_Kd") {
             const fs::path file = path.parent_path() / map_file(in, tok);
             if (!fs::exists(file)) in.fail("map_Kd texture '{}' does not exist", file.string());
-            cur->kd_texture = int(add_texture(scene, file));
+            try {
+                cur->kd_texture = int(add_texture(scene, file));
+            } catch (const InputError& e) {
+                in.fail("map_Kd: {}", e.what()); // the texture's own error, at this line
+            }
         } else
             in.fail("unknown MTL statement '{}'", key);
     }
