@@ -36,16 +36,21 @@ void store_rows(const glm::mat4& m, vec4& r0, vec4& r1, vec4& r2) {
     r2 = vec4(m[0][2], m[1][2], m[2][2], m[3][2]);
 }
 
-void check_camera(const CameraDesc& c, const RenderSettings& s) {
-    if (s.width == 0 || s.height == 0) input_error("film: width and height must be positive");
+// The camera and film come from the scene file or from the command-line flags that override
+// it (apply_overrides), so the messages name both.
+void check_camera(const std::string& path, const CameraDesc& c, const RenderSettings& s) {
+    if (s.width == 0 || s.height == 0)
+        input_error("{}: film.width and film.height (--width, --height) must be positive", path);
     if (!is_finite3(c.eye) || !is_finite3(c.target) || !is_finite3(c.up))
-        input_error("camera: eye, target and up must be finite");
+        input_error("{}: camera.eye, camera.target and camera.up must be finite", path);
     if (!(c.fov_y_degrees > 0.0f && c.fov_y_degrees < 180.0f))
-        input_error("camera: fov must lie in (0, 180) degrees, got {}", c.fov_y_degrees);
+        input_error("{}: camera.fov (--fov) must lie in (0, 180) degrees, got {}", path,
+                    c.fov_y_degrees);
     const vec3 d = c.target - c.eye;
-    if (glm::length(d) == 0.0f) input_error("camera: eye and target coincide");
+    if (glm::length(d) == 0.0f)
+        input_error("{}: camera.eye and camera.target (--eye, --target) coincide", path);
     if (glm::length(glm::cross(glm::normalize(d), c.up)) < 1e-6f)
-        input_error("camera: up is zero or parallel to the viewing direction");
+        input_error("{}: camera.up (--up) is zero or parallel to the viewing direction", path);
 }
 
 // Places the camera on +Z of the bounding sphere's centre, far enough for the sphere to fit
@@ -120,7 +125,7 @@ FlatScene flatten(const Scene& scene) {
     CameraDesc cam = scene.camera;
     const float aspect = float(scene.settings.width) / float(std::max(scene.settings.height, 1u));
     if (!cam.given) frame_camera(cam, f.bounds_min, f.bounds_max, aspect);
-    check_camera(cam, scene.settings);
+    check_camera(scene.path, cam, scene.settings);
     f.params.camera = camera_make(cam.eye, cam.target, cam.up, cam.fov_y_degrees,
                                   scene.settings.width, scene.settings.height);
     f.params.max_depth = scene.settings.max_depth;
