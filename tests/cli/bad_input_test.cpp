@@ -1,0 +1,465 @@
+// Every kind of bad input of issue 2 through the real command line: one clear message that names
+// the file and the line or field, exit code 2, and no output file of any kind left behind.
+#include "support/test_paths.h"
+
+#include <catch2/catch.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace fs = std::filesystem;
+using tp::test::run;
+using tp::test::shell_quote;
+
+namespace {
+
+struct BadInput {
+    std::string name;
+    std::vector<std::pair<std::string, std::string>> files; // written into a fresh directory
+    std::string scene;                                      // the file rendered (or a path)
+    std::string args;                                       // further command-line arguments
+    std::vector<std::string> expected;                      // substrings of the message
+};
+
+// A small valid scene; cases below replace one part of it.
+std::string scene_json(const std::string& camera, const std::string& materials,
+                       const std::string& meshes, const std::string& objects,
+                       const std::string& extra = "") {
+    return "{\n  \"camera\": " + camera + ",\n  \"film\": {\"width\": 8, \"height\": 8},\n" +
+           "  \"materials\": " + materials + ",\n  \"meshes\": " + meshes + ",\n" +
+           "  \"objects\": " + objects + extra + "\n}\n";
+}
+
+const std::string kCamera =
+    R"({"eye": [0, 0, 3], "target": [0, 0, 0], "up": [0, 1, 0], "fov": 40})";
+const std::string kMaterials = R"({"m": {"Kd": [0.5, 0.5, 0.5], "Ke": [1, 1, 1]}})";
+const std::string kMeshes = R"({"ball": {"type": "sphere", "subdivisions": 1}})";
+const std::string kObjects = R"([{"mesh": "ball", "material": "m"}])";
+
+std::string with_material(const std::string& m) {
+    return scene_json(kCamera, "{\"m\": " + m + "}", kMeshes, kObjects);
+}
+std::string with_camera(const std::string& c) {
+    return scene_json(c, kMaterials, kMeshes, kObjects);
+}
+std::string with_mesh(const std::string& m) {
+    return scene_json(kCamera, kMaterials, "{\"t\": " + m + "}",
+                      R"([{"mesh": "t", "material": "m"}])");
+}
+std::string with_extra(const std::string& e) {
+    return scene_json(kCamera, kMaterials, kMeshes, kObjects, ",\n  " + e);
+}
+
+const std::string kTriangleObj = "v 0 0 0\nv 1 0 0\nv 0 1 0\n";
+const std::string kPngGarbage = "this is not a PNG file\n";
+
+// An OBJ with one triangle that uses the material 'a' of m.mtl.
+std::vector<std::pair<std::string, std::string>> with_mtl(const std::string& mtl) {
+    return {{"m.mtl", mtl}, {"bad.obj", "mtllib m.mtl\n" + kTriangleObj + "usemtl a\nf 1 2 3\n"}};
+}
+
+void check_rejected(const BadInput& c) {
+    const std::string dir = tp::test::temp_dir("bad-input");
+    for (const auto& [file, text] : c.files) std::ofstream(fs::path(dir) / file) << text;
+    const std::string scene =
+        c.scene.find('/') == std::string::npos ? (fs::path(dir) / c.scene).string() : c.scene;
+    const fs::path out = fs::path(dir) / "out";
+    const auto r =
+        run(tp::test::twinpath_bin() + " render " + shell_quote(scene) + " -o " +
+            shell_quote(out.string() + ".exr") + " --png " + shell_quote(out.string() + ".png") +
+            " --stats " + shell_quote(out.string() + ".json") +
+            (c.args.find("--spp") == std::string::npos ? " --spp 1 " : " ") + c.args);
+    INFO(c.name << "\n" << r.out);
+    CHECK(r.exit_code == 2);
+    for (const std::string& s : c.expected) CHECK(r.out.find(s) != std::string::npos);
+    // One message: a single line, or two for a usage error, where CLI11 adds its "Run with
+    // --help" hint.
+    size_t lines = 0;
+    for (char ch : r.out) lines += ch == '\n' ? 1 : 0;
+    CHECK(lines >= 1);
+    CHECK(lines <= 2);
+    CHECK(r.out.find("internal error") == std::string::npos);
+    // Nothing written: neither the outputs nor write_exr's temporary file.
+    for (const char* ext : {".exr", ".png", ".json", ".exr.partial"})
+        CHECK_FALSE(fs::exists(out.string() + ext));
+    fs::remove_all(dir);
+}
+
+void check_all(const std::vector<BadInput>& cases) {
+    for (const BadInput& c : cases) DYNAMIC_SECTION(c.name) {
+            check_rejected(c);
+        }
+}
+
+} // namespace
+
+TEST_CASE("bad JSON scenes are rejected with file and field", "[cli][bad-input]") {
+    check_all({
+        {"malformed JSON names file and line",
+         {{"bad.json", "{\n  \"objects\": [\n    1,\n  ]\n}\n"}},
+         "bad.json",
+         "",
+         {"bad.json", "line 4"}},
+        {"number overflowing double (1e999) names file and line",
+         {{"bad.json", "{\n  \"film\": {\n    \"width\": 1e999\n  }\n}\n"}},
+         "bad.json",
+         "",
+         {"bad.json", "line 3", "1e999"}},
+        {"root is not an object",
+         {{"bad.json", "[1, 2, 3]\n"}},
+         "bad.json",
+         "",
+         {"bad.json", "object"}},
+        {"unknown top-level key",
+         {{"bad.json", with_extra(R"("camra": {})")}},
+         "bad.json",
+         "",
+         {"bad.json", "camra", "unknown key"}},
+        {"unknown nested key names the field path",
+         {{"bad.json", with_material(R"({"Kd": [0.5, 0.5, 0.5], "Kx": 1})")}},
+         "bad.json",
+         "",
+         {"bad.json", "materials.m.Kx", "unknown key"}},
+        {"wrong type",
+         {{"bad.json", with_extra(R"("render": {"spp": "many"})")}},
+         "bad.json",
+         "",
+         {"bad.json", "render.spp"}},
+        {"missing objects",
+         {{"bad.json", "{\"materials\": {}}\n"}},
+         "bad.json",
+         "",
+         {"bad.json", "objects"}},
+        {"unknown material type",
+         {{"bad.json", with_material(R"({"type": "velvet", "Kd": [0.5, 0.5, 0.5]})")}},
+         "bad.json",
+         "",
+         {"bad.json", "materials.m.type", "velvet"}},
+        {"negative Kd",
+         {{"bad.json", with_material(R"({"Kd": [-0.1, 0.5, 0.5]})")}},
+         "bad.json",
+         "",
+         {"bad.json", "materials.m.Kd", "negative"}},
+        {"Kd + Ks > 1",
+         {{"bad.json", with_material(R"({"Kd": [0.6, 0.6, 0.6], "Ks": [0.5, 0.3, 0.3]})")}},
+         "bad.json",
+         "",
+         {"bad.json", "materials.m", "Kd + Ks"}},
+        {"negative Ns",
+         {{"bad.json", with_material(R"({"Kd": [0.5, 0.5, 0.5], "Ns": -2})")}},
+         "bad.json",
+         "",
+         {"bad.json", "materials.m.Ns"}},
+        {"index of refraction 0",
+         {{"bad.json", with_material(R"({"type": "dielectric", "Ni": 0})")}},
+         "bad.json",
+         "",
+         {"bad.json", "materials.m.Ni"}},
+        {"colour beyond float range (1e39)",
+         {{"bad.json", with_material(R"({"Kd": [1e39, 0, 0]})")}},
+         "bad.json",
+         "",
+         {"bad.json", "materials.m.Kd[0]", "finite"}},
+        {"negative point light intensity",
+         {{"bad.json",
+           with_extra(
+               R"("lights": [{"type": "point", "position": [0, 1, 0], "intensity": [1, -1, 1]}])")}},
+         "bad.json",
+         "",
+         {"bad.json", "lights[0].intensity"}},
+        {"directional light without a direction",
+         {{"bad.json",
+           with_extra(
+               R"("lights": [{"type": "directional", "direction": [0, 0, 0], "irradiance": [1, 1, 1]}])")}},
+         "bad.json",
+         "",
+         {"bad.json", "lights[0].direction"}},
+        {"negative environment radiance",
+         {{"bad.json",
+           with_extra(R"("environment": {"type": "constant", "radiance": [0.1, -0.1, 0.1]})")}},
+         "bad.json",
+         "",
+         {"bad.json", "environment.radiance"}},
+        {"zero samples per pixel",
+         {{"bad.json", with_extra(R"("render": {"spp": 0})")}},
+         "bad.json",
+         "",
+         {"bad.json", "render.spp"}},
+        {"unknown mesh type",
+         {{"bad.json", with_mesh(R"({"type": "torus"})")}},
+         "bad.json",
+         "",
+         {"bad.json", "meshes.t.type", "torus"}},
+        {"vertex beyond float range (a NaN/Inf triangle)",
+         {{"bad.json",
+           with_mesh(
+               R"({"type": "triangles", "vertices": [[0, 0, 0], [1e39, 0, 0], [0, 1, 0]], "triangles": [[0, 1, 2]]})")}},
+         "bad.json",
+         "",
+         {"bad.json", "meshes.t.vertices[1][0]", "finite"}},
+        {"triangle index out of range",
+         {{"bad.json",
+           with_mesh(
+               R"({"type": "triangles", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "triangles": [[0, 1, 3]]})")}},
+         "bad.json",
+         "",
+         {"bad.json", "meshes.t.triangles[0]", "out of range"}},
+        {"only zero-area triangles",
+         {{"bad.json",
+           with_mesh(
+               R"({"type": "triangles", "vertices": [[0, 0, 0], [1, 0, 0], [2, 0, 0]], "triangles": [[0, 1, 2]]})")}},
+         "bad.json",
+         "",
+         {"bad.json", "meshes.t", "degenerate"}},
+        {"unknown mesh name",
+         {{"bad.json",
+           scene_json(kCamera, kMaterials, kMeshes, R"([{"mesh": "cube", "material": "m"}])")}},
+         "bad.json",
+         "",
+         {"bad.json", "objects[0].mesh", "cube"}},
+        {"singular transform",
+         {{"bad.json",
+           scene_json(kCamera, kMaterials, kMeshes,
+                      R"([{"mesh": "ball", "material": "m", "transform": {"scale": 0}}])")}},
+         "bad.json",
+         "",
+         {"bad.json", "objects[0].transform"}},
+    });
+}
+
+TEST_CASE("missing and unreadable files are rejected with the referencing file and field",
+          "[cli][bad-input]") {
+    check_all({
+        {"missing scene file", {}, "nosuch.json", "", {"nosuch.json"}},
+        {"unknown scene format",
+         {{"scene.txt", "hello\n"}},
+         "scene.txt",
+         "",
+         {"scene.txt", ".txt"}},
+        {"missing OBJ mesh",
+         {{"bad.json", with_mesh(R"({"type": "obj", "file": "gone.obj"})")}},
+         "bad.json",
+         "",
+         {"bad.json", "meshes.t.file", "gone.obj"}},
+        {"missing texture",
+         {{"bad.json", with_extra(R"("textures": {"t": {"file": "gone.png"}})")}},
+         "bad.json",
+         "",
+         {"bad.json", "textures.t.file", "gone.png"}},
+        {"unreadable texture",
+         {{"bad.json", with_extra(R"("textures": {"t": {"file": "bad.png"}})")},
+          {"bad.png", kPngGarbage}},
+         "bad.json",
+         "",
+         {"bad.json", "textures.t.file", "bad.png"}},
+        {"missing environment map",
+         {{"bad.json", with_extra(R"("environment": {"type": "map", "file": "sky.exr"})")}},
+         "bad.json",
+         "",
+         {"bad.json", "environment.file", "sky.exr"}},
+        {"texture name not defined",
+         {{"bad.json", with_material(R"({"Kd": [0.5, 0.5, 0.5], "map_Kd": "wood"})")}},
+         "bad.json",
+         "",
+         {"bad.json", "materials.m.map_Kd", "wood"}},
+        {"missing MTL library",
+         {{"bad.obj", "mtllib gone.mtl\n" + kTriangleObj + "f 1 2 3\n"}},
+         "bad.obj",
+         "",
+         {"bad.obj:1", "gone.mtl"}},
+        {"missing map_Kd texture",
+         with_mtl("newmtl a\nKd 0.5 0.5 0.5\nmap_Kd gone.png\n"),
+         "bad.obj",
+         "",
+         {"m.mtl:3", "gone.png"}},
+        {"unreadable map_Kd texture",
+         [] {
+             auto f = with_mtl("newmtl a\nKd 0.5 0.5 0.5\nmap_Kd bad.png\n");
+             f.emplace_back("bad.png", kPngGarbage);
+             return f;
+         }(),
+         "bad.obj",
+         "",
+         {"m.mtl:3", "bad.png"}},
+    });
+}
+
+TEST_CASE("bad OBJ files are rejected with file and line", "[cli][bad-input]") {
+    check_all({
+        {"malformed number",
+         {{"bad.obj", "v 0 0 0\nv 1 zz 0\nv 0 1 0\nf 1 2 3\n"}},
+         "bad.obj",
+         "",
+         {"bad.obj:2", "zz"}},
+        {"NaN vertex",
+         {{"bad.obj", "v 0 0 0\nv nan 0 0\nv 0 1 0\nf 1 2 3\n"}},
+         "bad.obj",
+         "",
+         {"bad.obj:2", "finite"}},
+        {"infinite vertex",
+         {{"bad.obj", "v 0 0 0\nv 1 0 0\nv 0 inf 0\nf 1 2 3\n"}},
+         "bad.obj",
+         "",
+         {"bad.obj:3", "finite"}},
+        {"vertex beyond float range",
+         {{"bad.obj", "v 1e39 0 0\n" + kTriangleObj + "f 2 3 4\n"}},
+         "bad.obj",
+         "",
+         {"bad.obj:1", "1e39"}},
+        {"too few coordinates",
+         {{"bad.obj", "v 0 0\n" + kTriangleObj + "f 2 3 4\n"}},
+         "bad.obj",
+         "",
+         {"bad.obj:1", "'v'"}},
+        {"NaN texture coordinate",
+         {{"bad.obj", kTriangleObj + "vt 0.5 nan\nf 1/1 2/1 3/1\n"}},
+         "bad.obj",
+         "",
+         {"bad.obj:4", "finite"}},
+        {"normal with two coordinates",
+         {{"bad.obj", kTriangleObj + "vn 0 1\nf 1//1 2//1 3//1\n"}},
+         "bad.obj",
+         "",
+         {"bad.obj:4", "'vn'"}},
+        {"face index 0",
+         {{"bad.obj", kTriangleObj + "f 0 1 2\n"}},
+         "bad.obj",
+         "",
+         {"bad.obj:4", "index 0"}},
+        {"face index out of range",
+         {{"bad.obj", kTriangleObj + "f 1 2 9\n"}},
+         "bad.obj",
+         "",
+         {"bad.obj:4", "out of range"}},
+        {"negative face index out of range",
+         {{"bad.obj", kTriangleObj + "f -1 -2 -4\n"}},
+         "bad.obj",
+         "",
+         {"bad.obj:4", "out of range"}},
+        {"texture index out of range",
+         {{"bad.obj", kTriangleObj + "vt 0 0\nf 1/1 2/2 3/1\n"}},
+         "bad.obj",
+         "",
+         {"bad.obj:5", "out of range"}},
+        {"face with two vertices",
+         {{"bad.obj", kTriangleObj + "f 1 2\n"}},
+         "bad.obj",
+         "",
+         {"bad.obj:4", "at least 3"}},
+        {"face index not an integer",
+         {{"bad.obj", kTriangleObj + "f 1 2 3.5\n"}},
+         "bad.obj",
+         "",
+         {"bad.obj:4", "3.5"}},
+        {"unknown statement",
+         {{"bad.obj", kTriangleObj + "frobnicate 1\nf 1 2 3\n"}},
+         "bad.obj",
+         "",
+         {"bad.obj:4", "frobnicate"}},
+        {"undefined material",
+         {{"bad.obj", kTriangleObj + "usemtl ghost\nf 1 2 3\n"}},
+         "bad.obj",
+         "",
+         {"bad.obj:4", "ghost"}},
+        {"no faces", {{"bad.obj", kTriangleObj}}, "bad.obj", "", {"bad.obj", "no triangles"}},
+    });
+}
+
+TEST_CASE("bad MTL files are rejected with file and line", "[cli][bad-input]") {
+    check_all({
+        {"malformed number", with_mtl("newmtl a\nKd 1 zz 0\n"), "bad.obj", "", {"m.mtl:2", "zz"}},
+        {"two values for a colour",
+         with_mtl("newmtl a\nKd 0.5 0.5\n"),
+         "bad.obj",
+         "",
+         {"m.mtl:2", "Kd"}},
+        {"Kd + Ks > 1",
+         with_mtl("newmtl a\nKd 0.8 0.8 0.8\nKs 0.5\n"),
+         "bad.obj",
+         "",
+         {"m.mtl:1", "'a'", "Kd + Ks"}},
+        {"negative Kd",
+         with_mtl("newmtl a\nKd -0.5 0 0\n"),
+         "bad.obj",
+         "",
+         {"m.mtl:1", "Kd", "negative"}},
+        {"NaN Ks", with_mtl("newmtl a\nKs nan 0 0\n"), "bad.obj", "", {"m.mtl:2", "finite"}},
+        {"negative Ns",
+         with_mtl("newmtl a\nKd 0.5 0.5 0.5\nNs -1\n"),
+         "bad.obj",
+         "",
+         {"m.mtl:1", "Ns"}},
+        {"index of refraction 0",
+         with_mtl("newmtl a\nillum 7\nNi 0\n"),
+         "bad.obj",
+         "",
+         {"m.mtl:1", "Ni"}},
+        {"statement before newmtl",
+         with_mtl("Kd 0.5 0.5 0.5\nnewmtl a\n"),
+         "bad.obj",
+         "",
+         {"m.mtl:1", "newmtl"}},
+        {"unknown statement",
+         with_mtl("newmtl a\nKd 0.5 0.5 0.5\nsheen 1\n"),
+         "bad.obj",
+         "",
+         {"m.mtl:3", "sheen"}},
+        {"illum not an integer",
+         with_mtl("newmtl a\nillum x\n"),
+         "bad.obj",
+         "",
+         {"m.mtl:2", "'x'"}},
+    });
+}
+
+TEST_CASE("impossible cameras are rejected with the file and field or flag", "[cli][bad-input]") {
+    const std::string ok = with_camera(kCamera);
+    check_all({
+        {"eye equals target in the scene",
+         {{"bad.json", with_camera(R"({"eye": [1, 2, 3], "target": [1, 2, 3]})")}},
+         "bad.json",
+         "",
+         {"bad.json", "camera.eye", "camera.target"}},
+        {"up parallel to the view in the scene",
+         {{"bad.json", with_camera(R"({"eye": [0, 0, 3], "target": [0, 0, 0], "up": [0, 0, 2]})")}},
+         "bad.json",
+         "",
+         {"bad.json", "camera.up"}},
+        {"field of view 0 in the scene",
+         {{"bad.json", with_camera(R"({"eye": [0, 0, 3], "target": [0, 0, 0], "fov": 0})")}},
+         "bad.json",
+         "",
+         {"bad.json", "camera.fov"}},
+        {"field of view 180 in the scene",
+         {{"bad.json", with_camera(R"({"eye": [0, 0, 3], "target": [0, 0, 0], "fov": 180})")}},
+         "bad.json",
+         "",
+         {"bad.json", "camera.fov"}},
+        {"width 0 in the scene",
+         {{"bad.json", "{\"film\": {\"width\": 0}, \"meshes\": " + kMeshes + ", \"materials\": " +
+                           kMaterials + ", \"objects\": " + kObjects + "}\n"}},
+         "bad.json",
+         "",
+         {"bad.json", "film.width"}},
+        {"--eye equal to --target",
+         {{"ok.json", ok}},
+         "ok.json",
+         "--eye 1,1,1 --target 1,1,1",
+         {"ok.json", "--eye", "--target"}},
+        {"--up parallel to the view",
+         {{"ok.json", ok}},
+         "ok.json",
+         "--up 0,0,-1",
+         {"ok.json", "--up"}},
+        {"--fov 0", {{"ok.json", ok}}, "ok.json", "--fov 0", {"--fov"}},
+        {"--fov 180", {{"ok.json", ok}}, "ok.json", "--fov 180", {"--fov"}},
+        {"--width 0", {{"ok.json", ok}}, "ok.json", "--width 0", {"--width"}},
+        {"--height 0", {{"ok.json", ok}}, "ok.json", "--height 0", {"--height"}},
+        {"--eye with two numbers", {{"ok.json", ok}}, "ok.json", "--eye 1,2", {"--eye"}},
+        {"--eye with a NaN", {{"ok.json", ok}}, "ok.json", "--eye nan,0,1", {"--eye"}},
+        {"--spp 0", {{"ok.json", ok}}, "ok.json", "--spp 0", {"--spp"}},
+    });
+}

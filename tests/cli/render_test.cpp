@@ -1,0 +1,109 @@
+// twinpath render through the command line, on good input: the EXR of DESIGN.md ("Image
+// output"), the PNG preview, the statistics JSON, skipped degenerate triangles, auto-framing of
+// a bare OBJ, and the usage errors of the argument parser itself.
+#include "image/exr_io.h"
+#include "support/test_paths.h"
+
+#include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <string>
+
+namespace fs = std::filesystem;
+using tp::test::run;
+using tp::test::shell_quote;
+
+namespace {
+
+std::string bin() {
+    return tp::test::twinpath_bin();
+}
+
+} // namespace
+
+TEST_CASE("render writes the EXR, PNG and statistics DESIGN.md describes", "[cli]") {
+    const fs::path dir = tp::test::temp_dir("cli-render");
+    const auto r = run(bin() + " render furnace --spp 4 --width 8 --height 6 --seed 9 -o " +
+                       shell_quote((dir / "f.exr").string()) + " --png " +
+                       shell_quote((dir / "f.png").string()) + " --stats " +
+                       shell_quote((dir / "f.json").string()));
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+
+    const tp::ExrImage img = tp::read_exr((dir / "f.exr").string());
+    CHECK(img.width == 8);
+    CHECK(img.height == 6);
+    for (const char* c : {"R", "G", "B", "variance.R", "variance.G", "variance.B"})
+        CHECK(img.has(c));
+    CHECK(img.integers.at("twinpath:spp") == 4);
+    CHECK(img.integers.at("twinpath:seed") == 9);
+    CHECK(img.strings.at("twinpath:backend").rfind("cpu", 0) == 0);
+    CHECK(img.strings.at("twinpath:scene").find("furnace") != std::string::npos);
+    CHECK(img.strings.count("twinpath:device") == 1);
+    CHECK(img.reals.count("twinpath:render_time_s") == 1);
+    for (float v : img.channel("variance.R")) CHECK(v >= 0.0f);
+
+    std::ifstream png(dir / "f.png", std::ios::binary);
+    char sig[8] = {};
+    png.read(sig, 8);
+    CHECK(std::string(sig + 1, 3) == "PNG");
+
+    const nlohmann::json stats = nlohmann::json::parse(std::ifstream(dir / "f.json"));
+    CHECK(stats.at("spp") == 4);
+    CHECK(stats.at("width") == 8);
+    CHECK(stats.at("nan_samples") == 0);
+    CHECK(stats.at("samples") == 8 * 6 * 4);
+    CHECK(stats.at("rays").at("camera") == 8 * 6 * 4);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("render without -o writes <scene stem>.exr in the working directory", "[cli]") {
+    const fs::path dir = tp::test::temp_dir("cli-default-out");
+    const auto r = run("cd " + shell_quote(dir.string()) + " && " + bin() +
+                       " render furnace --spp 1 --width 4 --height 4");
+    INFO(r.out);
+    CHECK(r.exit_code == 0);
+    CHECK(fs::exists(dir / "furnace.exr"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("zero-area triangles are skipped with a count and the image still renders", "[cli]") {
+    // Two degenerate triangles (three collinear points; a repeated vertex) next to a good one.
+    const fs::path dir = tp::test::temp_dir("cli-degenerate");
+    std::ofstream(dir / "d.obj") << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\n"
+                                    "f 1 2 3\nf 1 2 4\nf 1 1 3\n";
+    const auto r = run(bin() + " render " + shell_quote((dir / "d.obj").string()) +
+                       " --spp 2 --width 8 --height 8 -o " + shell_quote((dir / "d.exr").string()));
+    INFO(r.out);
+    CHECK(r.exit_code == 0);
+    CHECK(r.out.find("d.obj") != std::string::npos);
+    CHECK(r.out.find("skipped 2 degenerate") != std::string::npos);
+    CHECK(fs::exists(dir / "d.exr"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("a bare OBJ is framed automatically and lit by a white environment", "[cli]") {
+    const fs::path dir = tp::test::temp_dir("cli-obj");
+    std::ofstream(dir / "q.obj") << "v -1 -1 5\nv 1 -1 5\nv 1 1 5\nv -1 1 5\nf 1 2 3 4\n";
+    const auto r = run(bin() + " render " + shell_quote((dir / "q.obj").string()) +
+                       " --spp 4 --width 8 --height 8 -o " + shell_quote((dir / "q.exr").string()));
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.out.find("white environment") != std::string::npos);
+    // The quad fills the centre of the frame: the centre pixel sees it, lit (not black).
+    const tp::ExrImage img = tp::read_exr((dir / "q.exr").string());
+    CHECK(img.channel("R")[size_t(4 * 8 + 4)] > 0.0f);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("usage errors exit with 2, --help with 0", "[cli]") {
+    CHECK(run(bin() + " --help").exit_code == 0);
+    CHECK(run(bin() + " render --help").exit_code == 0);
+    CHECK(run(bin()).exit_code == 2);
+    CHECK(run(bin() + " frobnicate").exit_code == 2);
+    CHECK(run(bin() + " render").exit_code == 2);
+    CHECK(run(bin() + " render furnace --bogus").exit_code == 2);
+    CHECK(run(bin() + " render furnace --backend opengl").exit_code == 2);
+}
