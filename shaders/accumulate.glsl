@@ -6,6 +6,15 @@
 // relative rounding error of either is below n * 2^-53 (1e-10 at n = 10^6) and the variance
 // that the host derives from them (sum_sq - sum * mean) keeps ~6 significant digits even when
 // the pixel's mean is 10^3 times its standard deviation.
+//
+// Loop budget: Mesa's llvmpipe (lavapipe, the CI device) ends every loop of a SIMD group once
+// all its loops together have iterated 65535 times (gallivm's LP_MAX_TGSI_LOOP_ITERATIONS, a
+// counter that is never reset), which would silently cut a BVH traversal or a path short.
+// After each sample, a loop of exactly batch.probe_iterations iterations checks that the
+// budget held while the sample ran (once it is spent, every loop runs exactly once). Only then
+// is the sample kept; otherwise the pixel stops at that sample, and the host repeats the
+// dispatch, which resumes every pixel at its next_sample. Every sample index is thus traced to
+// completion exactly once, whatever the device. Elsewhere the probe always passes.
 #ifndef TP_SHADERS_ACCUMULATE_GLSL
 #define TP_SHADERS_ACCUMULATE_GLSL
 
@@ -17,6 +26,7 @@
 struct PixelCounts {
     RayCounts rays;
     uint nan;
+    uint truncated; // 1 when the pixel stopped before the batch's last sample
 };
 
 PixelCounts pixel_counts_zero() {
@@ -25,7 +35,14 @@ PixelCounts pixel_counts_zero() {
     c.rays.extension = 0u;
     c.rays.shadow = 0u;
     c.nan = 0u;
+    c.truncated = 0u;
     return c;
+}
+
+bool loop_budget_held() {
+    uint n = 0u;
+    for (uint i = 0u; i < batch.probe_iterations; ++i) ++n;
+    return n == batch.probe_iterations;
 }
 
 PixelCounts render_pixel(uvec2 pixel) {
@@ -33,8 +50,19 @@ PixelCounts render_pixel(uvec2 pixel) {
     dvec3 sum = dvec3(0.0);
     dvec3 sum_sq = dvec3(0.0);
     uint n = 0u;
-    for (uint s = 0u; s < batch.sample_count; ++s) {
-        vec3 L = path_radiance(pixel.x, pixel.y, batch.sample_begin + s, c.rays);
+    uint p = pixel.y * params.camera.width + pixel.x;
+    uint end = batch.sample_begin + batch.sample_count;
+    uint s = accum[p].next_sample;
+    for (; s < end; ++s) {
+        RayCounts rays;
+        rays.camera = 0u;
+        rays.extension = 0u;
+        rays.shadow = 0u;
+        vec3 L = path_radiance(pixel.x, pixel.y, s, rays);
+        if (!loop_budget_held()) break; // sample s is discarded and traced again
+        c.rays.camera += rays.camera;
+        c.rays.extension += rays.extension;
+        c.rays.shadow += rays.shadow;
         if (!is_finite3(L)) {
             ++c.nan;
             continue;
@@ -44,10 +72,11 @@ PixelCounts render_pixel(uvec2 pixel) {
         sum_sq += d * d;
         ++n;
     }
-    uint p = pixel.y * params.camera.width + pixel.x;
+    c.truncated = s < end ? 1u : 0u;
     accum[p].sum += sum;
     accum[p].sum_sq += sum_sq;
     accum[p].count += n;
+    accum[p].next_sample = s;
     return c;
 }
 
@@ -66,11 +95,13 @@ void counters_flush(PixelCounts c) {
     uint extension = subgroupAdd(c.rays.extension);
     uint shadow = subgroupAdd(c.rays.shadow);
     uint nan = subgroupAdd(c.nan);
+    uint truncated = subgroupAdd(c.truncated);
     if (subgroupElect()) {
         counter_add(COUNTER_CAMERA, camera);
         counter_add(COUNTER_EXTENSION, extension);
         counter_add(COUNTER_SHADOW, shadow);
         counter_add(COUNTER_NAN, nan);
+        counter_add(COUNTER_TRUNCATED, truncated);
     }
 }
 

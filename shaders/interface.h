@@ -36,41 +36,50 @@ const uint BINDING_COUNT = 17u;
 // ---- push constants of one dispatch ----------------------------------------------------------
 // The dispatch covers rows [row_begin, row_end) of the image, every column, and samples
 // [sample_begin, sample_begin + sample_count) of each of those pixels.
+// A pixel continues from its own next_sample (PixelAccum), which equals sample_begin unless a
+// dispatch of this batch was cut short (accumulate.glsl, loop budget) and is being repeated.
 struct BatchParams {
     uint sample_begin;
     uint sample_count;
     uint row_begin;
     uint row_end;
-    uint bvh_top_root;   // compute mode: the top-level root node
-    uint env_table_size; // entries of the environment-map pixel table (0: none)
+    uint bvh_top_root;     // compute mode: the top-level root node
+    uint env_table_size;   // entries of the environment-map pixel table (0: none)
+    uint probe_iterations; // LOOP_PROBE_ITERATIONS (accumulate.glsl)
     uint pad0;
-    uint pad1;
 };
+
+const uint LOOP_PROBE_ITERATIONS = 2u;
 
 // ---- accumulation ----------------------------------------------------------------------------
 // Per pixel, in double precision: the sum and the sum of squares of its finite samples and how
-// many there were. The host merges them into the Film with Film::add_batch (Chan et al.).
+// many there were, and the index of the next sample to trace. The host merges them into the
+// Film with Film::add_batch (Chan et al.).
 struct PixelAccum {
     dvec3 sum;
     dvec3 sum_sq;
     uint count;
-    uint pad0;
+    uint next_sample;
 };
 
 // Ray and sample counters, each a 64-bit value as (low, high) 32-bit words so that any Vulkan
-// device can add to them with 32-bit atomics and an explicit carry.
+// device can add to them with 32-bit atomics and an explicit carry. COUNTER_TRUNCATED counts
+// the invocations of the last dispatch that stopped before their last sample; the host clears
+// it before every dispatch.
 const uint COUNTER_CAMERA = 0u;
 const uint COUNTER_EXTENSION = 2u;
 const uint COUNTER_SHADOW = 4u;
 const uint COUNTER_NAN = 6u;
-const uint COUNTER_WORDS = 8u;
+const uint COUNTER_TRUNCATED = 8u;
+const uint COUNTER_WORDS = 10u;
 
 const uint RENDER_GROUP_X = 8u; // compute workgroup: 8 x 8 pixels
 const uint RENDER_GROUP_Y = 8u;
 
 #ifdef __cplusplus
 static_assert(sizeof(BatchParams) == 32, "BatchParams layout");
-static_assert(sizeof(PixelAccum) == 56 && offsetof(PixelAccum, count) == 48, "PixelAccum layout");
+static_assert(sizeof(PixelAccum) == 56 && offsetof(PixelAccum, next_sample) == 52,
+              "PixelAccum layout");
 #endif
 
 TP_NAMESPACE_END

@@ -12,7 +12,7 @@ Batch BatchPlanner::next() const {
     uint32_t samples = pass_samples_;
     if (row_ == 0) { // a new pass: as many samples as the planned work covers, at least one
         const uint64_t fit = std::max<uint64_t>(work_ / pixels, 1);
-        samples = uint32_t(std::min<uint64_t>({fit, kMaxSamplesPerBatch, spp_ - samples_done_}));
+        samples = uint32_t(std::min<uint64_t>({fit, max_samples_, spp_ - samples_done_}));
     }
     uint32_t rows = height_ - row_;
     if (uint64_t(width_) * rows * samples > work_)
@@ -20,7 +20,8 @@ Batch BatchPlanner::next() const {
     return {samples_done_, samples, row_, row_ + rows};
 }
 
-void BatchPlanner::completed(const Batch& b, double seconds) {
+void BatchPlanner::completed(const Batch& b, double seconds, bool cut_short) {
+    if (cut_short) max_samples_ = std::max(1u, b.sample_count / 2);
     const uint64_t done = uint64_t(width_) * (b.row_end - b.row_begin) * b.sample_count;
     const double wanted = seconds > 0 ? double(done) * target_ / seconds : double(work_) * 4.0;
     work_ = uint64_t(std::clamp(wanted, double(work_) / 4.0, double(work_) * 4.0));

@@ -2,7 +2,9 @@
 // submission comes near a display watchdog (Windows TDR: 2 s) and --time-limit and progress
 // stay responsive. A pass traces `samples` samples of every pixel, as one submission or as
 // bands of rows; the work of the next submission (pixels x samples) follows the throughput
-// measured on the previous ones, changing by at most 4x at a time.
+// measured on the previous ones, changing by at most 4x at a time. A device that had to cut a
+// batch short (lavapipe's per-invocation loop budget, shaders/accumulate.glsl) gets at most
+// half as many samples per pixel in the batches after it.
 #pragma once
 
 #include <cstdint>
@@ -22,13 +24,15 @@ class BatchPlanner {
 
     bool done() const { return samples_done_ >= spp_; }
     Batch next() const;
-    // The batch from next() finished in `seconds` (wall time of its submission).
-    void completed(const Batch& b, double seconds);
+    // The batch from next() finished in `seconds` (wall time of its submissions); `cut_short`:
+    // it needed repeated dispatches.
+    void completed(const Batch& b, double seconds, bool cut_short = false);
 
     bool at_pass_boundary() const { return row_ == 0; }
     uint32_t samples_done() const { return samples_done_; } // whole passes
     double fraction_done() const;
     uint64_t work() const { return work_; } // pixel-samples planned per submission
+    uint32_t max_samples() const { return max_samples_; }
 
     static constexpr uint32_t kMaxSamplesPerBatch = 256;
     static constexpr uint64_t kInitialWork = 16384;
@@ -37,6 +41,7 @@ class BatchPlanner {
     uint32_t width_, height_, spp_;
     double target_;
     uint64_t work_ = kInitialWork;
+    uint32_t max_samples_ = kMaxSamplesPerBatch;
     uint32_t samples_done_ = 0;
     uint32_t row_ = 0;          // next row of the current pass
     uint32_t pass_samples_ = 0; // samples per pixel of the current pass (0: not started)

@@ -2,6 +2,7 @@
 
 #include "render_compute.spv.h"
 #include "shaders/interface.h"
+#include "util/error.h"
 #include "vulkan_rt/batch_planner.h"
 #include "vulkan_rt/bvh_builder.h"
 #include "vulkan_rt/compute_program.h"
@@ -70,12 +71,16 @@ RenderResult render_compute(const VulkanContext& ctx, const FlatScene& scene,
     });
 
     const GpuTimer timer(ctx);
+    const Buffer host_counters(ctx, counter_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    auto* words = static_cast<uint32_t*>(host_counters.mapped());
+    std::memset(words, 0, counter_bytes);
     BatchPlanner planner(W, H, scene.spp, kTargetSubmitSeconds);
     BatchParams bp{};
     bp.bvh_top_root = bvh.top_root;
     bp.env_table_size = uint32_t(scene.env_table.size());
+    bp.probe_iterations = LOOP_PROBE_ITERATIONS;
     double gpu_seconds = 0;
-    uint32_t submissions = 0;
+    uint32_t submissions = 0, repeats = 0;
     const auto t0 = std::chrono::steady_clock::now();
     while (!planner.done()) {
         const Batch b = planner.next();
@@ -86,15 +91,34 @@ RenderResult render_compute(const VulkanContext& ctx, const FlatScene& scene,
         const uint32_t groups_x = (W + RENDER_GROUP_X - 1) / RENDER_GROUP_X;
         const uint32_t groups_y = (b.row_end - b.row_begin + RENDER_GROUP_Y - 1) / RENDER_GROUP_Y;
         const auto t_submit = std::chrono::steady_clock::now();
-        ctx.submit_and_wait([&](VkCommandBuffer cmd) {
-            record_compute_barrier(cmd); // the previous batch's accumulator writes
-            timer.record_begin(cmd);
-            program.record_dispatch(cmd, &bp, groups_x, groups_y, 1);
-            timer.record_end(cmd);
-        });
-        planner.completed(b, seconds_since(t_submit));
-        gpu_seconds += timer.read_seconds();
-        ++submissions;
+        // Repeated while some pixels stopped early (accumulate.glsl, loop budget); each
+        // repetition resumes them where they stopped.
+        bool cut_short = false;
+        for (uint64_t camera_before = counter(words, COUNTER_CAMERA);; ++repeats) {
+            ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+                record_compute_barrier(cmd); // the previous dispatch's accumulator writes
+                vkCmdFillBuffer(cmd, counters.handle(), COUNTER_TRUNCATED * sizeof(uint32_t),
+                                2 * sizeof(uint32_t), 0);
+                record_compute_barrier(cmd);
+                timer.record_begin(cmd);
+                program.record_dispatch(cmd, &bp, groups_x, groups_y, 1);
+                timer.record_end(cmd);
+                record_compute_barrier(cmd);
+                const VkBufferCopy region{0, 0, counter_bytes};
+                vkCmdCopyBuffer(cmd, counters.handle(), host_counters.handle(), 1, &region);
+                record_host_read_barrier(cmd);
+            });
+            gpu_seconds += timer.read_seconds();
+            ++submissions;
+            if (counter(words, COUNTER_TRUNCATED) == 0) break;
+            if (counter(words, COUNTER_CAMERA) == camera_before)
+                runtime_error("the Vulkan device ends shader loops before one path is traced "
+                              "(lavapipe allows 65535 loop iterations per invocation); lower "
+                              "--max-depth");
+            camera_before = counter(words, COUNTER_CAMERA);
+            cut_short = true;
+        }
+        planner.completed(b, seconds_since(t_submit), cut_short);
         if (options.progress) options.progress(planner.fraction_done());
         if (planner.at_pass_boundary() && options.time_limit_s > 0 &&
             seconds_since(t0) >= options.time_limit_s)
@@ -104,19 +128,18 @@ RenderResult render_compute(const VulkanContext& ctx, const FlatScene& scene,
     st.gpu_time_s = timer.active() ? gpu_seconds : -1.0;
     st.spp = planner.samples_done();
     st.extra["submissions"] = std::to_string(submissions);
+    st.extra["repeated_submissions"] = std::to_string(repeats);
 
-    // Read back and merge into the double-precision film.
-    const Buffer host(ctx, accum_bytes + counter_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+    // Read back and merge into the double-precision film; the counters came back with the
+    // last dispatch.
+    const Buffer host(ctx, accum_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
     ctx.submit_and_wait([&](VkCommandBuffer cmd) {
         record_compute_barrier(cmd);
-        const VkBufferCopy a{0, 0, accum_bytes}, c{0, accum_bytes, counter_bytes};
-        vkCmdCopyBuffer(cmd, accum.handle(), host.handle(), 1, &a);
-        vkCmdCopyBuffer(cmd, counters.handle(), host.handle(), 1, &c);
+        const VkBufferCopy region{0, 0, accum_bytes};
+        vkCmdCopyBuffer(cmd, accum.handle(), host.handle(), 1, &region);
         record_host_read_barrier(cmd);
     });
     const auto* pixels = static_cast<const PixelAccum*>(host.mapped());
-    uint32_t words[COUNTER_WORDS];
-    std::memcpy(words, static_cast<const char*>(host.mapped()) + accum_bytes, sizeof(words));
     result.film = Film(W, H);
     for (uint32_t p = 0; p < W * H; ++p) {
         result.film.add_batch(p, pixels[p].count, pixels[p].sum, pixels[p].sum_sq);

@@ -125,6 +125,17 @@ TEST_CASE("batches cover every pixel-sample exactly once, in passes", "[gpu]") {
     CHECK(batch_count > 1);
 }
 
+TEST_CASE("a batch cut short halves the samples per pixel of the next ones", "[gpu]") {
+    BatchPlanner plan(8, 8, 1000, 0.1);
+    Batch b = plan.next();
+    plan.completed(b, 1e-6); // fast: the next batch takes many samples
+    b = plan.next();
+    REQUIRE(b.sample_count > 8);
+    plan.completed(b, 1e-6, true);
+    CHECK(plan.max_samples() == b.sample_count / 2);
+    CHECK(plan.next().sample_count <= b.sample_count / 2);
+}
+
 TEST_CASE("a slow device gets bands of rows, a fast one several samples per pixel", "[gpu]") {
     BatchPlanner slow(1000, 1000, 4, 0.1);
     Batch b = slow.next();
