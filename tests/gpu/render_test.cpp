@@ -141,7 +141,7 @@ TEST_CASE("twinpath info --json lists the Vulkan devices and their modes", "[gpu
     CHECK(devices[0]["modes"][0] == "compute");
 }
 
-TEST_CASE("--time-limit stops the Vulkan render after whole passes", "[gpu]") {
+TEST_CASE("a Vulkan render with a time limit stops after whole passes", "[gpu]") {
     const std::string dir = temp_dir("vk-time");
     const ProcessResult r = render("cornell", "vulkan", dir, "t",
                                    "--width 16 --height 16 --spp 100000000 --time-limit 1");

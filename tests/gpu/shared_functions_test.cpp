@@ -110,7 +110,8 @@ double fresnel_tol(double ci, double eta) {
     return spread + 16.0 * kU * f;
 }
 
-// Phong pdf in double and its tolerance given an uncertainty dc of cos(alpha).
+// The Phong pdf's value in double (for scale) and its tolerance given an uncertainty dc of
+// cos(alpha).
 void phong_pdf_tol(const vec3& kd, const vec3& ks, double ns, const glm::dvec3& n,
                    const glm::dvec3& wo, const glm::dvec3& wi, double dc, double& pdf,
                    double& tol) {
@@ -118,7 +119,7 @@ void phong_pdf_tol(const vec3& kd, const vec3& ks, double ns, const glm::dvec3& 
     const double pd = d + s > 0 ? d / (d + s) : 1.0;
     const glm::dvec3 r = glm::normalize(2.0 * glm::dot(n, wo) * n - wo);
     const double ca = glm::dot(r, wi), ci = glm::dot(n, wi);
-    const double pp = ns == 0 ? 1.0 : (ca <= 0 ? 0.0 : std::pow(ca, ns));
+    const double pp = ca <= 0 ? 0.0 : std::pow(ca, ns);
     const double diffuse = std::max(ci, 0.0) / M_PI, glossy = (ns + 1) / (2 * M_PI) * pp;
     pdf = pd * diffuse + (1 - pd) * glossy;
     const double dpd = 16.0 * kU * pd;
@@ -234,7 +235,7 @@ std::vector<Case> cases() {
         const glm::dvec3 n = d3(x.f[2]), wo = d3(x.f[3]), wi = d3(x.f[4]);
         const glm::dvec3 r = glm::normalize(2.0 * glm::dot(n, wo) * n - wo);
         const double ca = glm::dot(r, wi), ns = x.f[0].w;
-        const double pp = ns == 0 ? 1.0 : (ca <= 0 ? 0.0 : std::pow(ca, ns));
+        const double pp = ca <= 0 ? 0.0 : std::pow(ca, ns);
         const double lobe = (ns + 2) / (2 * M_PI) * pp;
         for (int i = 0; i < 3; ++i) {
             const double tol =
@@ -271,7 +272,8 @@ std::vector<Case> cases() {
         const glm::dvec3 n = d3(x.f[2]), wo = d3(x.f[3]), wi = d3(gpu.f[0]);
         double pdf, tol;
         phong_pdf_tol(kd, ks, ns, n, wo, wi, 40.0 * kU, pdf, tol);
-        k.close("pdf", gpu.f[0].w, pdf, tol + 4.0 * kU * pdf, 0);
+        const float pdf_cpu = phong_pdf(kd, ks, ns, vec3(n), vec3(wo), vec3(wi));
+        k.close("pdf", gpu.f[0].w, pdf_cpu, tol + 4.0 * kU * pdf, 0);
         const vec3 f = phong_eval(kd, ks, ns, vec3(n), vec3(wo), vec3(wi));
         for (int i = 0; i < 3; ++i) {
             const double w = double(f[i]) * glm::dot(n, wi) / double(gpu.f[0].w);
