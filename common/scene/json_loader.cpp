@@ -265,12 +265,14 @@ MeshRef read_mesh(const Reader& r, const json& j, const std::string& field, Scen
         ref.parts = load_obj(file.string(), scene, unset, warnings);
         return ref;
     } else if (type == "sphere") {
-        r.keys(j, field, {"type", "subdivisions", "inward"});
+        r.keys(j, field, {"type", "subdivisions", "inward", "smooth"});
         const uint32_t sub = j.contains("subdivisions")
                                  ? r.count(j["subdivisions"], field + ".subdivisions", 0, 8)
                                  : 4;
         const bool inward = j.contains("inward") && r.boolean(j["inward"], field + ".inward");
         m = make_icosphere(sub, inward);
+        // Flat shading: the faces' own normals, for scenes whose exact answer assumes them.
+        if (j.contains("smooth") && !r.boolean(j["smooth"], field + ".smooth")) m.normals.clear();
     } else if (type == "quad") {
         r.keys(j, field, {"type"});
         m = make_quad();
