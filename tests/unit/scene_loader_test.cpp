@@ -1,0 +1,177 @@
+// What the scene loaders make of good input (bad input is tests/cli/bad_input_test.cpp): the
+// OBJ/MTL statements DESIGN.md maps, JSON transforms and instancing, lights, and what
+// flatten() derives from them.
+#include "scene/flatten.h"
+#include "scene/load.h"
+#include "shared/surface.h"
+#include "support/test_paths.h"
+
+#include <catch2/catch.hpp>
+#include <glm/glm.hpp>
+
+#include <filesystem>
+#include <fstream>
+#include <numeric>
+
+namespace fs = std::filesystem;
+
+namespace {
+
+struct Loaded {
+    tp::Scene scene;
+    std::vector<std::string> warnings;
+};
+
+Loaded load(const fs::path& file) {
+    Loaded l;
+    l.scene = tp::load_scene(file.string(), l.warnings);
+    return l;
+}
+
+bool mentions(const std::vector<std::string>& warnings, const std::string& s) {
+    for (const std::string& w : warnings)
+        if (w.find(s) != std::string::npos) return true;
+    return false;
+}
+
+} // namespace
+
+TEST_CASE("OBJ + MTL: statements, indices and the material mapping", "[scene][obj]") {
+    const fs::path dir = tp::test::temp_dir("loader-obj");
+    std::ofstream(dir / "m.mtl")
+        << "# materials\r\n"
+           "newmtl glossy\r\nKd 0.2 0.3 0.4\r\nKs 0.5\r\nNs 80\r\nKa 1 1 1\r\n"
+           "newmtl chrome\nillum 3\nKs 0.9 0.8 0.7\n"
+           "newmtl glass\nillum 7\nNi 1.33\nTf 0.9 1 0.9\n"
+           "newmtl lamp\nKe 5 4 3\nillum 5\n";
+    std::ofstream(dir / "s.obj") << "mtllib m.mtl\no thing\ng part\ns 1\n"
+                                    "v 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\n"
+                                    "vt 0 0\nvt 1 0\nvt 1 1\nvt 0 1\nvn 0 0 1\n"
+                                    "usemtl glossy\nf 1/1/1 2/2/1 3/3/1 4/4/1  # a quad\n"
+                                    "usemtl chrome\nf -4 -3 -2\n"
+                                    "usemtl glass\nf 1 3 4\n"
+                                    "usemtl lamp\nf 1 2 3\n";
+    const Loaded l = load(dir / "s.obj");
+    const tp::Scene& s = l.scene;
+    // Materials: the default grey first, then the MTL's in order.
+    REQUIRE(s.materials.size() == 5);
+    CHECK(s.material_names[1] == "glossy");
+    const tp::Material& glossy = s.materials[1];
+    CHECK(glossy.type == tp::MATERIAL_PHONG);
+    CHECK(glossy.kd == tp::vec3(0.2f, 0.3f, 0.4f));
+    CHECK(glossy.ks == tp::vec3(0.5f)); // the grey shorthand
+    CHECK(glossy.ns == 80.0f);
+    CHECK(s.materials[2].type == tp::MATERIAL_MIRROR);
+    CHECK(s.materials[2].ks == tp::vec3(0.9f, 0.8f, 0.7f));
+    CHECK(s.materials[3].type == tp::MATERIAL_DIELECTRIC);
+    CHECK(s.materials[3].ior == 1.33f);
+    CHECK(s.materials[3].tf == tp::vec3(0.9f, 1.0f, 0.9f));
+    CHECK(s.materials[4].ke == tp::vec3(5.0f, 4.0f, 3.0f));
+    CHECK(s.materials[4].type == tp::MATERIAL_PHONG);
+    CHECK(mentions(l.warnings, "illum 5")); // rendered as Phong, said so
+    CHECK(mentions(l.warnings, "Ka"));      // ignored, said so
+    // One mesh per material; the quad fan-triangulated; uvs and normals kept where every
+    // corner has them, indices unified per corner.
+    REQUIRE(s.meshes.size() == 4);
+    REQUIRE(s.objects.size() == 4);
+    const tp::Mesh& quad = s.meshes[s.objects[0].mesh];
+    CHECK(s.objects[0].material == 1);
+    CHECK(quad.triangles.size() == 2);
+    CHECK(quad.positions.size() == 4);
+    CHECK(quad.uvs.size() == 4);
+    CHECK(quad.normals.size() == 4);
+    CHECK(quad.triangles[1] == tp::uvec3(0, 2, 3));
+    const tp::Mesh& negative = s.meshes[s.objects[1].mesh];
+    CHECK(negative.positions[0] == tp::vec3(0, 0, 0)); // -4 of 4 vertices is the first
+    CHECK(negative.positions[2] == tp::vec3(1, 1, 0));
+    CHECK(negative.uvs.empty());
+    CHECK(s.meshes[s.objects[3].mesh].normals.empty());
+    // An emitter exists, so no environment is added.
+    CHECK(s.environment.kind == tp::EnvironmentKind::None);
+    CHECK(s.skipped_triangles == 0);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("OBJ: zero-area triangles are dropped and counted", "[scene][obj]") {
+    const fs::path dir = tp::test::temp_dir("loader-degenerate");
+    std::ofstream(dir / "d.obj")
+        << "v 0 0 0\nv 1 0 0\nv 0 1 0\nv 2 0 0\nf 1 2 3\nf 1 2 4\nf 3 3 1\n";
+    const Loaded l = load(dir / "d.obj");
+    CHECK(l.scene.skipped_triangles == 2);
+    CHECK(l.scene.meshes.at(0).triangles.size() == 1);
+    CHECK(mentions(l.warnings, "skipped 2 degenerate"));
+    fs::remove_all(dir);
+}
+
+TEST_CASE("JSON: transforms, instancing, lights and what flatten derives", "[scene][json]") {
+    const fs::path dir = tp::test::temp_dir("loader-json");
+    std::ofstream(dir / "s.json") << R"({
+  "camera": {"eye": [0, 1, 5], "target": [0, 1, 0]},
+  "film": {"width": 20, "height": 10},
+  "render": {"spp": 3, "max_depth": 7, "min_depth": 2},
+  "materials": {
+    "white": {"Kd": [0.5, 0.5, 0.5]},
+    "lamp": {"Kd": [0.1, 0.1, 0.1], "Ke": [2, 2, 2]}
+  },
+  "meshes": {
+    "tri": {"type": "triangles", "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "triangles": [[0, 1, 2]]},
+    "panel": {"type": "quad"}
+  },
+  "objects": [
+    {"name": "a", "mesh": "tri", "material": "white",
+     "transform": {"translate": [1, 2, 3], "rotate": {"axis": [0, 0, 1], "degrees": 90}, "scale": 2}},
+    {"name": "b", "mesh": "tri", "material": "white"},
+    {"name": "light", "mesh": "panel", "material": "lamp", "transform": {"translate": [0, 3, 0]}}
+  ],
+  "lights": [
+    {"type": "point", "position": [0, 2, 0], "intensity": [3, 3, 3]},
+    {"type": "directional", "direction": [0, -2, 0], "irradiance": [1, 1, 1]}
+  ],
+  "environment": {"type": "constant", "radiance": [0.1, 0.1, 0.1]}
+})";
+    const Loaded l = load(dir / "s.json");
+    const tp::Scene& s = l.scene;
+    CHECK(l.warnings.empty());
+    CHECK(s.settings.width == 20);
+    CHECK(s.settings.spp == 3);
+    CHECK(s.settings.max_depth == 7);
+    CHECK(s.settings.min_depth == 2);
+    CHECK(s.camera.given);
+    CHECK(s.camera.fov_y_degrees == 45.0f); // default
+
+    const tp::FlatScene f = tp::flatten(s);
+    // The triangle is stored once and instanced twice.
+    CHECK(f.meshes.size() == 2);
+    CHECK(f.unique_triangles == 1 + 2);
+    CHECK(f.instanced_triangles == 1 + 1 + 2);
+    // translate * rotate * scale: vertex (1, 0, 0) -> scale (2, 0, 0) -> rotate 90 degrees
+    // about Z (0, 2, 0) -> translate (1, 4, 3).
+    const tp::vec3 p = tp::instance_point_to_world(f.instances[0], tp::vec3(1, 0, 0));
+    CHECK(glm::length(p - tp::vec3(1, 4, 3)) < 1e-5f);
+    const tp::vec3 back = tp::instance_point_to_object(f.instances[0], p);
+    CHECK(glm::length(back - tp::vec3(1, 0, 0)) < 1e-5f);
+    // Lights: the point and directional lights, the lamp's 2 triangles, the environment.
+    REQUIRE(f.lights.size() == 5);
+    CHECK(f.lights[0].type == tp::LIGHT_POINT);
+    CHECK(f.lights[1].type == tp::LIGHT_DIRECTIONAL);
+    CHECK(glm::length(f.lights[1].p0 - tp::vec3(0, 1, 0)) < 1e-6f); // towards the light
+    CHECK(f.lights[2].type == tp::LIGHT_TRIANGLE);
+    CHECK(f.lights[2].area == Approx(2.0f)); // half of the 2 x 2 quad
+    CHECK(f.instances[2].light_offset == 2);
+    CHECK(f.params.env_light == 4);
+    CHECK(f.params.light_count == 5);
+    double pdf_sum = 0.0;
+    for (const tp::AliasEntry& e : f.light_table) pdf_sum += double(e.pdf);
+    CHECK(pdf_sum == Approx(1.0).epsilon(1e-6));
+    // Camera: looking down -Z from (0, 1, 5), 2:1 film.
+    CHECK(glm::length(f.params.camera.forward - tp::vec3(0, 0, -1)) < 1e-6f);
+    CHECK(f.params.camera.aspect == 2.0f);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("bundled scenes resolve by name", "[scene]") {
+    std::vector<std::string> warnings;
+    const tp::Scene s = tp::load_scene("cornell", warnings);
+    CHECK(fs::path(s.path).filename() == "cornell.json");
+    CHECK(tp::flatten(s).params.light_count == 2); // the ceiling light's two triangles
+}
