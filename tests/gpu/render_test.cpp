@@ -125,6 +125,20 @@ TEST_CASE("bad --device and --vk-mode fail with exit code 2 and a clear message"
     CHECK_THAT(mode.out, Catch::Contains("pipeline"));
 }
 
+TEST_CASE("without a Vulkan driver a render fails with exit code 3, info still works", "[gpu]") {
+    // Points the loader at a driver manifest that does not exist: no ICD at all.
+    const std::string no_driver =
+        "VK_ICD_FILENAMES=/nonexistent.json VK_DRIVER_FILES=/nonexistent.json ";
+    const std::string dir = temp_dir("vk-none");
+    const ProcessResult r = run(no_driver + twinpath("render cornell --backend vulkan --spp 1 -o " +
+                                                     shell_quote(dir + "/x.exr")));
+    CHECK(r.exit_code == 3);
+    CHECK_THAT(r.out, Catch::Contains("no usable Vulkan driver"));
+    const ProcessResult info = run(no_driver + twinpath("info"));
+    CHECK(info.exit_code == 0);
+    CHECK_THAT(info.out, Catch::Contains("vulkan: unavailable"));
+}
+
 TEST_CASE("twinpath info --json lists the Vulkan devices and their modes", "[gpu]") {
     const ProcessResult r = run(twinpath("info --json"));
     REQUIRE(r.exit_code == 0);
