@@ -42,10 +42,22 @@ class ComputeSession {
           program_(ctx, tp_spirv_render_compute, sizeof(tp_spirv_render_compute), BINDING_COUNT,
                    sizeof(BatchParams)),
           timer_(ctx) {
+        std::vector<const Buffer*> bound;
+        for (const Buffer& b : scene_.slots) bound.push_back(&b);
+        bound.push_back(&accum_);
+        bound.push_back(&counters_);
         std::vector<VkBuffer> bindings;
-        for (const Buffer& b : scene_.slots) bindings.push_back(b.handle());
-        bindings.push_back(accum_.handle());
-        bindings.push_back(counters_.handle());
+        for (const Buffer* b : bound) {
+            // A binding covers its whole buffer, which must fit the device's range.
+            if (b->size() > ctx.limits().maxStorageBufferRange)
+                runtime_error("a {:.1f} MiB buffer (binding {}) exceeds the {:.1f} MiB "
+                              "storage-buffer range of {}; lower --width/--height or use a "
+                              "smaller scene",
+                              double(b->size()) / 1048576.0, bindings.size(),
+                              double(ctx.limits().maxStorageBufferRange) / 1048576.0,
+                              ctx.info().name);
+            bindings.push_back(b->handle());
+        }
         program_.bind(bindings);
         std::memset(host_counters_.mapped(), 0, kCounterBytes);
         ctx.submit_and_wait([&](VkCommandBuffer cmd) {
