@@ -23,7 +23,7 @@ std::string bin() {
 
 } // namespace
 
-TEST_CASE("render writes the EXR, PNG and statistics DESIGN.md describes", "[cli]") {
+TEST_CASE("render writes the EXR and PNG and statistics DESIGN.md describes", "[cli]") {
     const fs::path dir = tp::test::temp_dir("cli-render");
     const auto r = run(bin() + " render furnace --spp 4 --width 8 --height 6 --seed 9 -o " +
                        shell_quote((dir / "f.exr").string()) + " --png " +
@@ -98,7 +98,7 @@ TEST_CASE("a bare OBJ is framed automatically and lit by a white environment", "
     fs::remove_all(dir);
 }
 
-TEST_CASE("usage errors exit with 2, --help with 0", "[cli]") {
+TEST_CASE("usage errors exit with 2 and --help with 0", "[cli]") {
     CHECK(run(bin() + " --help").exit_code == 0);
     CHECK(run(bin() + " render --help").exit_code == 0);
     CHECK(run(bin()).exit_code == 2);

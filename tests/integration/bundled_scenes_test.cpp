@@ -25,7 +25,8 @@ std::string read(const fs::path& p) {
 
 } // namespace
 
-TEST_CASE("scenes/*.json are what scenes/generate_scenes.py writes", "[integration][scenes]") {
+TEST_CASE("the bundled scene files are what scenes/generate_scenes.py writes",
+          "[integration][scenes]") {
     const fs::path dir = tp::test::temp_dir("generated-scenes");
     const fs::path src = fs::path(tp::test::source_dir()) / "scenes";
     const auto r =
@@ -49,7 +50,8 @@ TEST_CASE("scenes/*.json are what scenes/generate_scenes.py writes", "[integrati
     fs::remove_all(dir);
 }
 
-TEST_CASE("every bundled scene loads, flattens and renders without NaN", "[integration][scenes]") {
+TEST_CASE("every bundled scene loads and flattens and renders without NaN",
+          "[integration][scenes]") {
     for (const char* name : {"cornell", "cornell_glossy", "spheres", "furnace"}) {
         DYNAMIC_SECTION(name) {
             std::vector<std::string> warnings;

@@ -103,7 +103,7 @@ TEST_CASE("phong_eval matches thesis eq. 2.28 and phong_pdf the mixture pdf", "[
         }
 }
 
-TEST_CASE("Phong is reciprocal: f(wo, wi) = f(wi, wo)", "[phong]") {
+TEST_CASE("Phong is reciprocal in wo and wi", "[phong]") {
     // Exactly so in the equations: cos(alpha) = 2 (n.wo)(n.wi) - wo.wi is symmetric; in float
     // the two evaluations differ by the rounding of cos(alpha) (twice kCosError).
     Rng rng;
@@ -122,7 +122,7 @@ TEST_CASE("Phong is reciprocal: f(wo, wi) = f(wi, wo)", "[phong]") {
         }
 }
 
-TEST_CASE("phong_power is max(c, 0)^n for every exponent, GLSL's undefined pow(0, 0) avoided",
+TEST_CASE("phong_power clamps at 0 for every exponent and avoids GLSL's undefined 0 to the 0",
           "[phong]") {
     // n = 0 too is confined to the lobe's hemisphere, where sample_phong_lobe draws.
     CHECK(tp::phong_power(0.5f, 0.0f) == 1.0f);
@@ -226,8 +226,9 @@ TEST_CASE("Fresnel reflectance of a smooth dielectric", "[dielectric]") {
     }
 }
 
-TEST_CASE("dielectric sampling: mirror reflection, Snell refraction, weights and sides",
-          "[dielectric]") {
+TEST_CASE(
+    "dielectric sampling: mirror reflection and Snell refraction with their weights and sides",
+    "[dielectric]") {
     const tp::vec3 n(0.0f, 0.0f, 1.0f);
     const tp::vec3 tf(0.9f, 0.8f, 1.0f);
     for (bool inside : {false, true})

@@ -19,7 +19,7 @@ glm::dvec2 plane(const tp::Camera& c, const tp::vec3& d) {
 
 } // namespace
 
-TEST_CASE("camera frame is orthonormal, right-handed and Y-up", "[camera]") {
+TEST_CASE("camera frame is orthonormal and right-handed with Y up", "[camera]") {
     // Looking down -Z with +Y up, right is +X.
     const tp::Camera c =
         tp::camera_make(tp::vec3(0, 0, 5), tp::vec3(0), tp::vec3(0, 1, 0), 45.0f, 64, 32);
@@ -38,7 +38,7 @@ TEST_CASE("camera frame is orthonormal, right-handed and Y-up", "[camera]") {
     CHECK(glm::dot(t.up, tp::vec3(0.2f, 1, 0.3f)) > 0.0f);
 }
 
-TEST_CASE("film centre looks forward, corners at +-tan(fov/2) aspect and +-tan(fov/2)",
+TEST_CASE("film centre looks forward and the edges lie at tan(fov/2) times aspect and tan(fov/2)",
           "[camera]") {
     for (const auto& [w, h, fov] :
          {std::tuple{640u, 480u, 60.0f}, {100u, 300u, 20.0f}, {7u, 7u, 120.0f}}) {

@@ -30,7 +30,7 @@ TEST_CASE("sign is 0 at both zeros and +-1 elsewhere (GLSL 8.3)", "[glsl]") {
     CHECK(tp::sign(-std::numeric_limits<float>::denorm_min()) == -1.0f);
 }
 
-TEST_CASE("fract is x - floor(x), so negatives map into [0, 1) (GLSL 8.3)", "[glsl]") {
+TEST_CASE("fract is x - floor(x) so negatives map into 0 to 1 (GLSL 8.3)", "[glsl]") {
     CHECK(tp::fract(-0.25f) == 0.75f);
     CHECK(tp::fract(-1.0f) == 0.0f);
     CHECK(tp::fract(2.5f) == 0.5f);
@@ -42,7 +42,7 @@ TEST_CASE("fract is x - floor(x), so negatives map into [0, 1) (GLSL 8.3)", "[gl
     CHECK(tp::floor(-0.5f) == -1.0f);
 }
 
-TEST_CASE("reflect is I - 2 dot(N, I) N, unnormalised (GLSL 8.5)", "[glsl]") {
+TEST_CASE("reflect is I - 2 dot(N I) N unnormalised (GLSL 8.5)", "[glsl]") {
     CHECK(tp::reflect(tp::vec3(1, -1, 0), tp::vec3(0, 1, 0)) == tp::vec3(1, 1, 0));
     CHECK(tp::reflect(tp::vec3(0.6f, -0.8f, 0), tp::vec3(0, 1, 0)) == tp::vec3(0.6f, 0.8f, 0));
     // With a non-unit N the result is the formula's, not a mirror direction.
@@ -100,7 +100,7 @@ TEST_CASE("is_finite tests the exponent bits: NaN and both infinities are not fi
     CHECK_FALSE(tp::is_finite(-std::numeric_limits<float>::quiet_NaN()));
 }
 
-TEST_CASE("mix is x (1 - a) + y a, exact at both ends (GLSL 8.3)", "[glsl]") {
+TEST_CASE("mix is x (1 - a) + y a and exact at both ends (GLSL 8.3)", "[glsl]") {
     // texture.h blends texels with mix; the spec's form returns y exactly at a = 1, which the
     // shorter x + a (y - x) does not guarantee.
     CHECK(tp::mix(2.0f, 4.0f, 0.25f) == 2.5f);
@@ -109,7 +109,7 @@ TEST_CASE("mix is x (1 - a) + y a, exact at both ends (GLSL 8.3)", "[glsl]") {
     CHECK(tp::mix(tp::vec3(0.1f), tp::vec3(0.7f), 1.0f) == tp::vec3(0.7f));
 }
 
-TEST_CASE("clamp is min(max(x, lo), hi) and exp2/log2 are inverses (GLSL 8.2, 8.3)", "[glsl]") {
+TEST_CASE("clamp is min of max and exp2 inverts log2 (GLSL 8.2 and 8.3)", "[glsl]") {
     CHECK(tp::clamp(-2.0f, -1.0f, 1.0f) == -1.0f);
     CHECK(tp::clamp(0.3f, -1.0f, 1.0f) == 0.3f);
     CHECK(tp::clamp(7.0f, -1.0f, 1.0f) == 1.0f);

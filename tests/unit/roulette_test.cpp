@@ -19,7 +19,7 @@ tp::vec3 expected_throughput(const tp::vec3& t, uint32_t bounces, uint32_t min_d
 
 } // namespace
 
-TEST_CASE("Russian roulette is unbiased: E[survive / q] = 1", "[roulette]") {
+TEST_CASE("Russian roulette is unbiased: E(survive / q) = 1", "[roulette]") {
     // Survival is u < q: ceil(q 2^24) of the 2^24 values, a probability above q by less than
     // 2^-24, so the expectation is T to a relative 2^-24 / q (plus the float division T / q).
     for (const tp::vec3& t : {tp::vec3(0.5f, 0.2f, 0.1f), tp::vec3(0.01f, 0.003f, 0.0f),

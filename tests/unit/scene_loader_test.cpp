@@ -36,7 +36,7 @@ bool mentions(const std::vector<std::string>& warnings, const std::string& s) {
 
 } // namespace
 
-TEST_CASE("OBJ + MTL: statements, indices and the material mapping", "[scene][obj]") {
+TEST_CASE("OBJ and MTL: statements and indices and the material mapping", "[scene][obj]") {
     const fs::path dir = tp::test::temp_dir("loader-obj");
     std::ofstream(dir / "m.mtl")
         << "# materials\r\n"
@@ -103,7 +103,7 @@ TEST_CASE("OBJ: zero-area triangles are dropped and counted", "[scene][obj]") {
     fs::remove_all(dir);
 }
 
-TEST_CASE("JSON: transforms, instancing, lights and what flatten derives", "[scene][json]") {
+TEST_CASE("JSON: transforms and instancing and lights and what flatten derives", "[scene][json]") {
     const fs::path dir = tp::test::temp_dir("loader-json");
     std::ofstream(dir / "s.json") << R"({
   "camera": {"eye": [0, 1, 5], "target": [0, 1, 0]},

@@ -17,7 +17,7 @@ TEST_CASE("wrap_texel is the mathematical modulo for negative and large texel in
     CHECK(tp::wrap_texel(-16777215.0f, 1000u) == 1000u - 16777215u % 1000u);
 }
 
-TEST_CASE("bilinear footprint: texel centres, midpoints and wrapping", "[texture]") {
+TEST_CASE("bilinear footprint at texel centres and midpoints and across the wrap", "[texture]") {
     const uint32_t w = 8, h = 4;
     SECTION("at a texel centre the weight is all on that texel") {
         const tp::TexelFootprint fp =
@@ -89,7 +89,8 @@ TEST_CASE("uv_to_image flips v: OBJ's v = 0 is the bottom row", "[texture]") {
     CHECK(tp::uv_to_image(tp::vec2(0.25f, 0.75f)) == tp::vec2(0.25f, 0.25f));
 }
 
-TEST_CASE("lat-long mapping: centre looks down -Z, t = 0 is +Y, and it round-trips", "[texture]") {
+TEST_CASE("lat-long mapping looks down -Z at its centre and up at t = 0 and round-trips",
+          "[texture]") {
     CHECK(glm::length(tp::latlong_to_direction(tp::vec2(0.5f, 0.5f)) - tp::vec3(0, 0, -1)) < 1e-6f);
     CHECK(glm::length(tp::latlong_to_direction(tp::vec2(0.75f, 0.5f)) - tp::vec3(1, 0, 0)) < 1e-6f);
     CHECK(glm::length(tp::latlong_to_direction(tp::vec2(0.3f, 0.0f)) - tp::vec3(0, 1, 0)) < 1e-6f);
