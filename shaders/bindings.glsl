@@ -1,13 +1,13 @@
-// The scene, BVH and film buffers of descriptor set 0 (slots in interface.h), as the render
-// shaders see them. Every block uses the scalar layout, so the arrays are byte-for-byte the
-// C++ vectors of FlatScene and of the BVH builder.
+// The scene and film buffers of descriptor set 0 (slots in interface.h), as the render shaders
+// see them. Every block uses the scalar layout, so the arrays are byte-for-byte the C++
+// vectors of FlatScene. The acceleration structure's bindings belong to the trace include
+// (trace_bvh.glsl: slots 13 and 14).
 #ifndef TP_SHADERS_BINDINGS_GLSL
 #define TP_SHADERS_BINDINGS_GLSL
 
 #extension GL_EXT_scalar_block_layout : require
 
 #include "interface.h"
-#include "shared/intersect.h"
 #include "shared/types.h"
 
 layout(scalar, set = 0, binding = BINDING_PARAMS) readonly buffer ParamsBuffer {
@@ -48,14 +48,6 @@ layout(scalar, set = 0, binding = BINDING_TEXELS) readonly buffer TexelBuffer {
 };
 layout(scalar, set = 0, binding = BINDING_ENV_TABLE) readonly buffer EnvTableBuffer {
     AliasEntry env_table[];
-};
-// The BVH arrays are read as vec4s (BvhNode: 4, BvhTriangle: 3 per item) so that every load
-// is one aligned 16-byte transaction; trace_bvh.glsl reassembles the structs.
-layout(std430, set = 0, binding = BINDING_BVH_NODES) readonly buffer BvhNodeBuffer {
-    vec4 bvh_node_words[];
-};
-layout(std430, set = 0, binding = BINDING_BVH_TRIS) readonly buffer BvhTriangleBuffer {
-    vec4 bvh_triangle_words[];
 };
 layout(scalar, set = 0, binding = BINDING_ACCUM) buffer AccumBuffer {
     PixelAccum accum[];

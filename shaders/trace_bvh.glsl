@@ -26,6 +26,15 @@
 #include "shared/surface.h"
 #include "trace_hit.glsl"
 
+// The BVH of vulkan_rt/bvh_builder.cpp, read as vec4s (BvhNode: 4, BvhTriangle: 3 per item) so
+// that every load is one aligned 16-byte transaction.
+layout(std430, set = 0, binding = BINDING_BVH_NODES) readonly buffer BvhNodeBuffer {
+    vec4 bvh_node_words[];
+};
+layout(std430, set = 0, binding = BINDING_BVH_TRIS) readonly buffer BvhTriangleBuffer {
+    vec4 bvh_triangle_words[];
+};
+
 const uint BVH_INSTANCE_FLAG = 0x80000000u;
 
 BvhNode bvh_load_node(uint i) {
