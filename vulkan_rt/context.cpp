@@ -147,24 +147,32 @@ VulkanContext::VulkanContext(const std::string& selector)
     dci.pQueueCreateInfos = &qci;
     vk_check(vkCreateDevice(physical_, &dci, nullptr, &device_), "creating the Vulkan device");
     vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
-
-    VkCommandPoolCreateInfo pci{};
-    pci.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
-    pci.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
-    pci.queueFamilyIndex = queue_family_;
-    vk_check(vkCreateCommandPool(device_, &pci, nullptr, &pool_), "creating a command pool");
-    VkFenceCreateInfo fci{};
-    fci.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
-    vk_check(vkCreateFence(device_, &fci, nullptr, &fence_), "creating a fence");
+    try {
+        VkCommandPoolCreateInfo pci{};
+        pci.sType = VK_STRUCTURE_TYPE_COMMAND_POOL_CREATE_INFO;
+        pci.flags = VK_COMMAND_POOL_CREATE_TRANSIENT_BIT;
+        pci.queueFamilyIndex = queue_family_;
+        vk_check(vkCreateCommandPool(device_, &pci, nullptr, &pool_), "creating a command pool");
+        VkFenceCreateInfo fci{};
+        fci.sType = VK_STRUCTURE_TYPE_FENCE_CREATE_INFO;
+        vk_check(vkCreateFence(device_, &fci, nullptr, &fence_), "creating a fence");
+    } catch (...) {
+        release();
+        throw;
+    }
 }
 
 VulkanContext::~VulkanContext() {
-    if (device_) {
-        vkDeviceWaitIdle(device_); // best effort: a lost device cannot be waited for
-        vkDestroyFence(device_, fence_, nullptr);
-        vkDestroyCommandPool(device_, pool_, nullptr);
-        vkDestroyDevice(device_, nullptr);
-    }
+    release();
+}
+
+void VulkanContext::release() {
+    if (!device_) return;
+    vkDeviceWaitIdle(device_); // best effort: a lost device cannot be waited for
+    if (fence_) vkDestroyFence(device_, fence_, nullptr);
+    if (pool_) vkDestroyCommandPool(device_, pool_, nullptr);
+    vkDestroyDevice(device_, nullptr);
+    device_ = VK_NULL_HANDLE;
 }
 
 uint32_t VulkanContext::memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,

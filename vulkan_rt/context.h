@@ -61,6 +61,7 @@ class VulkanContext {
     void submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const;
 
   private:
+    void release();
     std::unique_ptr<VulkanInstance> instance_;
     DeviceInfo info_;
     VkPhysicalDevice physical_ = VK_NULL_HANDLE;
