@@ -52,14 +52,13 @@ void same_all(const FnOut& c, const FnOut& g, Checker& k) {
 constexpr double kUnitAbs = 32.0 * kU;
 
 // Relative error of phong_power(c, n) = exp2(n log2 c) when c itself is uncertain by dc:
-// log2 c errs by log_abs(c) (scaled to log2) plus dc / (c ln 2), multiplied by n, plus the
+// log2 c errs by log2_abs(c) plus dc / (c ln 2), multiplied by n, plus the
 // product's rounding; exp2 turns an absolute error dx of its argument into a relative error
 // ln 2 dx and adds its own 3 + 2|x| ulp.
 double phong_power_rel(double c, double n, double dc) {
     if (n == 0.0 || c <= 0.0) return 0.0;
     const double x = n * std::log2(c);
-    const double dx =
-        n * (log_abs(c) / std::log(2.0) + dc / (c * std::log(2.0))) + kU * std::abs(x);
+    const double dx = n * (log2_abs(c) + dc / (c * std::log(2.0))) + kU * std::abs(x);
     return std::log(2.0) * dx + exp_rel(x) + 2.0 * kU;
 }
 
@@ -80,18 +79,19 @@ double sqrt_err(double y, double dy) {
 }
 
 // sample_phong_lobe's error chain in double: t = log(1 - u)/(n + 1), omc = -expm1(t),
-// sin = sqrt(omc (2 - omc)); returns (sin alpha, its error, error of cos alpha = 1 - omc).
+// sin = sqrt(omc (2 - omc)); returns (sin alpha, its error, error of cos alpha = 1 - omc, which
+// includes the roundings of 1 - omc on both sides: up to one ulp of [0.5, 1) = 2 u).
 glm::dvec3 phong_lobe_errors(double u1, double n) {
     const double one_minus_u = double(1.0f - float(u1));
     const double L = std::log(one_minus_u);
-    const double dL = log_abs(one_minus_u) * std::log(2.0) + kU;
+    const double dL = log_abs(one_minus_u) + kU;
     const double t = L / (n + 1.0);
     const double dt = dL / (n + 1.0) + kDivRel * std::abs(t) + kU * std::abs(t);
     const double omc = -std::expm1(t);
     const double domc =
         std::exp(t) * dt + (std::abs(t) < 1e-3 ? 8.0 * kU * omc : exp_rel(t) * std::exp(t) + kU);
     const double s2 = omc * (2.0 - omc);
-    return {std::sqrt(std::max(s2, 0.0)), sqrt_err(s2, 2.0 * domc + kU), domc};
+    return {std::sqrt(std::max(s2, 0.0)), sqrt_err(s2, 2.0 * domc + kU), domc + 2.0 * kU};
 }
 
 // Fresnel reflectance in double with cos_t perturbed by +-dct, and the spread that causes.

@@ -43,7 +43,11 @@ constexpr double kFlushAbs = 0x1p-125;     // twice the smallest normal float
 inline double exp_rel(double x) {
     return (3.0 + 2.0 * std::abs(x)) * kUlp;
 }
-inline double log_abs(double x) { // error bound of log/log2 at x (the log2 one scaled by 1/ln 2)
+// Absolute error bounds of log(x) and log2(x) results.
+inline double log_abs(double x) {
+    return (x >= 0.5 && x <= 2.0) ? kLogAbsNearOne : kLogRel * std::abs(std::log(x));
+}
+inline double log2_abs(double x) {
     return (x >= 0.5 && x <= 2.0) ? kLogAbsNearOne : kLogRel * std::abs(std::log2(x));
 }
 
