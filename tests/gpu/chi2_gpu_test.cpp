@@ -66,7 +66,8 @@ tp::vec3 direction_at(const glm::dvec3& n, double theta_degrees) {
 
 } // namespace
 
-TEST_CASE("GPU: cosine, Phong lobe, sphere and triangle samplers follow their pdfs", "[gpu]") {
+TEST_CASE("GPU: cosine and Phong lobe and sphere and triangle samplers follow their pdfs",
+          "[gpu]") {
     tp::DrawParams p{};
     {
         const Result r = test_directions(

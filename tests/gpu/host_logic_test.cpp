@@ -50,7 +50,7 @@ DeviceInfo device(uint32_t index, const char* name, const char* type, bool compu
 
 } // namespace
 
-TEST_CASE("device selection by index, name substring or best type", "[gpu]") {
+TEST_CASE("device selection by index or name substring or best type", "[gpu]") {
     const std::vector<DeviceInfo> devices = {device(0, "llvmpipe (LLVM 15)", "cpu"),
                                              device(1, "NVIDIA H100 PCIe", "discrete"),
                                              device(2, "Old GPU", "integrated", false)};
@@ -89,7 +89,7 @@ TEST_CASE("modes a device supports and the mode a request resolves to", "[gpu]")
     CHECK_THROWS_AS(resolve_vk_mode("pipeline", d), InputError);
 }
 
-TEST_CASE("batches cover every pixel-sample exactly once, in passes", "[gpu]") {
+TEST_CASE("batches cover every pixel-sample exactly once in passes", "[gpu]") {
     const uint32_t W = 37, H = 23, spp = 300;
     BatchPlanner plan(W, H, spp, 0.1);
     std::vector<uint32_t> samples(W * H, 0);
@@ -136,7 +136,7 @@ TEST_CASE("a batch cut short halves the samples per pixel of the next ones", "[g
     CHECK(plan.next().sample_count <= b.sample_count / 2);
 }
 
-TEST_CASE("a slow device gets bands of rows, a fast one several samples per pixel", "[gpu]") {
+TEST_CASE("a slow device gets bands of rows and a fast one several samples per pixel", "[gpu]") {
     BatchPlanner slow(1000, 1000, 4, 0.1);
     Batch b = slow.next();
     CHECK(b.sample_count == 1);
@@ -218,7 +218,7 @@ struct Walk {
 
 } // namespace
 
-TEST_CASE("BVH: every triangle once per mesh, boxes enclose their content", "[gpu]") {
+TEST_CASE("BVH holds every triangle once per mesh in boxes that enclose their content", "[gpu]") {
     const FlatScene scene = bvh_scene();
     const BvhBuild bvh = build_bvh(scene);
     REQUIRE(bvh.mesh_roots.size() == scene.meshes.size());

@@ -125,7 +125,7 @@ TEST_CASE("bad --device and --vk-mode fail with exit code 2 and a clear message"
     CHECK_THAT(mode.out, Catch::Contains("pipeline"));
 }
 
-TEST_CASE("without a Vulkan driver a render fails with exit code 3, info still works", "[gpu]") {
+TEST_CASE("without a Vulkan driver a render fails with exit code 3 and info still works", "[gpu]") {
     // Points the loader at a driver manifest that does not exist: no ICD at all.
     const std::string no_driver =
         "VK_ICD_FILENAMES=/nonexistent.json VK_DRIVER_FILES=/nonexistent.json ";
