@@ -66,9 +66,10 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
         uint32_t(std::clamp<uint64_t>(kSamplesPerPass / (uint64_t(W) * H), 1, 1024));
 
     const auto t0 = std::chrono::steady_clock::now();
+    double snapshot_seconds = 0; // film copies for checkpoints: not rendering time
     uint32_t done = 0;
     while (done < scene.spp) {
-        const uint32_t s0 = done, s1 = std::min(scene.spp, done + pass_spp);
+        const uint32_t s0 = done, s1 = std::min(options.next_stop(done, scene.spp), done + pass_spp);
         tbb::combinable<TileCounters> counters;
         tbb::parallel_for(
             tbb::blocked_range<uint32_t>(0, tiles_x * tiles_y),
@@ -94,9 +95,18 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
         });
         done = s1;
         if (options.progress) options.progress(double(done) / double(scene.spp));
+        if (options.on_checkpoint && options.is_checkpoint(done)) {
+            const auto t_snap = std::chrono::steady_clock::now();
+            RenderResult snapshot{result.film, st};
+            snapshot.stats.wall_time_s = seconds_since(t0) - snapshot_seconds;
+            snapshot.stats.spp = done;
+            snapshot.stats.samples = uint64_t(done) * W * H - st.nan_samples;
+            options.on_checkpoint(snapshot);
+            snapshot_seconds += seconds_since(t_snap);
+        }
         if (options.time_limit_s > 0 && seconds_since(t0) >= options.time_limit_s) break;
     }
-    st.wall_time_s = seconds_since(t0);
+    st.wall_time_s = seconds_since(t0) - snapshot_seconds;
     st.spp = done;
     st.samples = uint64_t(done) * W * H - st.nan_samples;
     return result;

@@ -5,14 +5,14 @@
 namespace tp {
 
 BatchPlanner::BatchPlanner(uint32_t width, uint32_t height, uint32_t spp, double target_seconds)
-    : width_(width), height_(height), spp_(spp), target_(target_seconds) {}
+    : width_(width), height_(height), spp_(spp), stop_(spp), target_(target_seconds) {}
 
 Batch BatchPlanner::next() const {
     const uint64_t pixels = uint64_t(width_) * height_;
     uint32_t samples = pass_samples_;
     if (row_ == 0) { // a new pass: as many samples as the planned work covers, at least one
         const uint64_t fit = std::max<uint64_t>(work_ / pixels, 1);
-        samples = uint32_t(std::min<uint64_t>({fit, max_samples_, spp_ - samples_done_}));
+        samples = uint32_t(std::min<uint64_t>({fit, max_samples_, stop_ - samples_done_}));
     }
     uint32_t rows = height_ - row_;
     if (uint64_t(width_) * rows * samples > work_)

@@ -22,7 +22,9 @@ class BatchPlanner {
   public:
     BatchPlanner(uint32_t width, uint32_t height, uint32_t spp, double target_seconds);
 
-    bool done() const { return samples_done_ >= spp_; }
+    bool done() const { return samples_done_ >= stop_; }
+    // Ends the render (for now) after `spp` samples per pixel: a checkpoint; at most the total.
+    void stop_at(uint32_t spp) { stop_ = spp < spp_ ? spp : spp_; }
     Batch next() const;
     // The batch from next() finished in `seconds` (wall time of its submissions); `cut_short`:
     // it needed repeated dispatches.
@@ -39,6 +41,7 @@ class BatchPlanner {
 
   private:
     uint32_t width_, height_, spp_;
+    uint32_t stop_;
     double target_;
     uint64_t work_ = kInitialWork;
     uint32_t max_samples_ = kMaxSamplesPerBatch;

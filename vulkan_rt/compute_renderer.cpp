@@ -187,18 +187,31 @@ RenderResult render_compute(const VulkanContext& ctx, const FlatScene& scene,
     st.accel_bytes = session.accel_bytes();
 
     BatchPlanner planner(st.width, st.height, scene.spp, kTargetSubmitSeconds);
+    planner.stop_at(options.next_stop(0, scene.spp));
     const auto t0 = std::chrono::steady_clock::now();
+    double snapshot_seconds = 0; // read-backs for checkpoints: not rendering time
     while (!planner.done()) {
         const Batch b = planner.next();
         const auto t_batch = std::chrono::steady_clock::now();
         const bool cut_short = session.run(b);
         planner.completed(b, seconds_since(t_batch), cut_short);
         if (options.progress) options.progress(planner.fraction_done());
+        if (planner.done() && options.on_checkpoint && options.is_checkpoint(planner.samples_done())) {
+            const auto t_snap = std::chrono::steady_clock::now();
+            RenderResult snapshot{Film(), st};
+            snapshot.stats.wall_time_s = seconds_since(t0) - snapshot_seconds;
+            snapshot.stats.gpu_time_s = session.gpu_seconds();
+            snapshot.stats.spp = planner.samples_done();
+            snapshot.film = session.read_back(snapshot.stats);
+            options.on_checkpoint(snapshot);
+            snapshot_seconds += seconds_since(t_snap);
+        }
+        planner.stop_at(options.next_stop(planner.samples_done(), scene.spp));
         if (planner.at_pass_boundary() && options.time_limit_s > 0 &&
             seconds_since(t0) >= options.time_limit_s)
             break;
     }
-    st.wall_time_s = seconds_since(t0);
+    st.wall_time_s = seconds_since(t0) - snapshot_seconds;
     st.gpu_time_s = session.gpu_seconds();
     st.spp = planner.samples_done();
     st.extra["submissions"] = std::to_string(session.submissions());

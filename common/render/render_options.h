@@ -7,8 +7,11 @@
 
 #include <cstdint>
 #include <functional>
+#include <vector>
 
 namespace tp {
+
+struct RenderResult;
 
 struct RenderOptions {
     uint32_t seed = 0;
@@ -16,6 +19,24 @@ struct RenderOptions {
     uint32_t threads = 0;    // CPU threads; 0: all cores
     // Called after every pass with the fraction of samples done; may be empty.
     std::function<void(double fraction)> progress;
+    // Sample counts at which a snapshot is wanted: a benchmark ladder renders once and reads
+    // the film at 1, 2, 4, ... spp, with the time spent so far. Passes end exactly at these
+    // counts and on_checkpoint receives the film and statistics up to there. Ascending;
+    // counts above the render's spp are ignored.
+    std::vector<uint32_t> checkpoints;
+    std::function<void(const RenderResult& snapshot)> on_checkpoint;
+
+    // The first checkpoint above `done`, or `spp` when there is none.
+    uint32_t next_stop(uint32_t done, uint32_t spp) const {
+        for (uint32_t c : checkpoints)
+            if (c > done && c < spp) return c;
+        return spp;
+    }
+    bool is_checkpoint(uint32_t done) const {
+        for (uint32_t c : checkpoints)
+            if (c == done) return true;
+        return false;
+    }
 };
 
 struct RenderResult {
