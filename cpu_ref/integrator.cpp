@@ -57,7 +57,7 @@ vec3 CpuIntegrator::radiance(uint32_t x, uint32_t y, uint32_t sample_index, RayC
         // 3. Next-event estimation.
         if (!material_is_delta(mat) && P.light_count > 0) {
             const uint32_t slot =
-                alias_slot(rng_bounce(key, bounce, RNG_LIGHT_SLOT), P.light_count);
+                alias_slot_from_bits(rng_bounce_bits(key, bounce, RNG_LIGHT_SLOT), P.light_count);
             const AliasEntry& e = s.light_table[slot];
             const uint32_t li =
                 alias_resolve(slot, e.prob, e.alias, rng_bounce(key, bounce, RNG_LIGHT_COIN));
@@ -65,7 +65,7 @@ vec3 CpuIntegrator::radiance(uint32_t x, uint32_t y, uint32_t sample_index, RayC
             const vec2 u(rng_bounce(key, bounce, RNG_LIGHT_U),
                          rng_bounce(key, bounce, RNG_LIGHT_V));
             const LightSample ls =
-                access_.sample(li, sp.p, u, rng_bounce(key, bounce, RNG_ENV_SLOT),
+                access_.sample(li, sp.p, u, rng_bounce_bits(key, bounce, RNG_ENV_SLOT),
                                rng_bounce(key, bounce, RNG_ENV_COIN));
             if (ls.pdf > 0.0f && dot(ls.wi, sp.ng) > 0.0f) {
                 const vec3 f = bsdf_eval(mat, sp.ns, wo, ls.wi);

@@ -70,14 +70,15 @@ class SceneAccess {
                                    sin(st.y * PI));
     }
 
-    // Samples light `i` from point p; the environment map's pixel is drawn with slot/coin.
-    LightSample sample(uint32_t i, vec3 p, vec2 u, float env_slot, float env_coin) const {
+    // Samples light `i` from point p; the environment map's pixel is drawn with the 32 random
+    // bits env_slot_bits and the number env_coin.
+    LightSample sample(uint32_t i, vec3 p, vec2 u, uint32_t env_slot_bits, float env_coin) const {
         const Light& l = s_.lights[i];
         if (l.type != LIGHT_ENVIRONMENT || s_.params.env_texture == NO_TEXTURE)
             return sample_light(l, p, u);
         if (s_.env_table.empty()) return light_sample_none();
         const TextureInfo& info = s_.textures[size_t(s_.params.env_texture)];
-        const uint32_t slot = alias_slot(env_slot, uint32_t(s_.env_table.size()));
+        const uint32_t slot = alias_slot_from_bits(env_slot_bits, uint32_t(s_.env_table.size()));
         const AliasEntry& e = s_.env_table[slot];
         const uint32_t pixel = alias_resolve(slot, e.prob, e.alias, env_coin);
         LightSample ls = sample_environment_map(pixel, s_.env_table[pixel].pdf, info.width,

@@ -67,13 +67,15 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
 
         // 3. Next-event estimation.
         if (!material_is_delta(mat) && params.light_count > 0u) {
-            uint slot = alias_slot(rng_bounce(key, bounce, RNG_LIGHT_SLOT), params.light_count);
+            uint slot = alias_slot_from_bits(rng_bounce_bits(key, bounce, RNG_LIGHT_SLOT),
+                                             params.light_count);
             AliasEntry e = light_table[slot];
             uint li = alias_resolve(slot, e.prob, e.alias, rng_bounce(key, bounce, RNG_LIGHT_COIN));
             float sel_pdf = scene_light_selection_pdf(li);
             vec2 u = vec2(rng_bounce(key, bounce, RNG_LIGHT_U), rng_bounce(key, bounce, RNG_LIGHT_V));
-            LightSample ls = scene_sample_light(li, sp.p, u, rng_bounce(key, bounce, RNG_ENV_SLOT),
-                                                rng_bounce(key, bounce, RNG_ENV_COIN));
+            LightSample ls =
+                scene_sample_light(li, sp.p, u, rng_bounce_bits(key, bounce, RNG_ENV_SLOT),
+                                   rng_bounce(key, bounce, RNG_ENV_COIN));
             if (ls.pdf > 0.0f && dot(ls.wi, sp.ng) > 0.0f) {
                 vec3 f = bsdf_eval(mat, sp.ns, wo, ls.wi);
                 if (!is_black(f) && !is_black(ls.radiance)) {

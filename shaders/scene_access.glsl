@@ -63,14 +63,15 @@ float scene_environment_pdf(vec3 d) {
     return environment_map_pdf(env_table[pixel].pdf, info.width, info.height, sin(st.y * PI));
 }
 
-// Samples light i from point p; the environment map's pixel is drawn with slot/coin.
-LightSample scene_sample_light(uint i, vec3 p, vec2 u, float env_slot, float env_coin) {
+// Samples light i from point p; the environment map's pixel is drawn with the 32 random bits
+// env_slot_bits and the number env_coin.
+LightSample scene_sample_light(uint i, vec3 p, vec2 u, uint env_slot_bits, float env_coin) {
     Light l = lights[i];
     if (l.type != LIGHT_ENVIRONMENT || params.env_texture == NO_TEXTURE)
         return sample_light(l, p, u);
     if (batch.env_table_size == 0u) return light_sample_none();
     TextureInfo info = textures[params.env_texture];
-    uint slot = alias_slot(env_slot, batch.env_table_size);
+    uint slot = alias_slot_from_bits(env_slot_bits, batch.env_table_size);
     AliasEntry e = env_table[slot];
     uint pixel = alias_resolve(slot, e.prob, e.alias, env_coin);
     LightSample ls = sample_environment_map(pixel, env_table[pixel].pdf, info.width, info.height,

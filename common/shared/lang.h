@@ -57,6 +57,11 @@ using glm::sin;
 using glm::sqrt;
 using glm::tan;
 using glm::uintBitsToFloat;
+
+// The high 32 bits of the 64-bit product a * b: GLSL's umulExtended, here through uint64.
+inline uint umul_hi(uint a, uint b) {
+    return uint((uint64_t(a) * uint64_t(b)) >> 32u);
+}
 } // namespace tp
 
 #define TP_NAMESPACE_BEGIN namespace tp {
@@ -72,6 +77,14 @@ using glm::uintBitsToFloat;
 #define INOUT(T) inout T
 #define inline
 #define static
+
+// The high 32 bits of the 64-bit product a * b (the C++ side multiplies in uint64).
+uint umul_hi(uint a, uint b) {
+    uint hi;
+    uint lo;
+    umulExtended(a, b, hi, lo);
+    return hi;
+}
 
 #endif
 

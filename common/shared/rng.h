@@ -13,6 +13,9 @@
 //         4 and 5 environment-map pixel slot and coin, 6 lobe choice (Phong diffuse or
 //         specular, dielectric reflect or refract), 7 and 8 scattered direction,
 //         9 Russian roulette
+// Every dimension is one 32-bit hash word: rng_get gives its top 24 bits as a float in [0, 1);
+// the two alias-table slots (k = 0 and 4) take the whole word from rng_get_bits instead
+// (sampling.h, alias_slot_from_bits), since 24 bits cannot split a large table evenly.
 #ifndef TP_SHARED_RNG_H
 #define TP_SHARED_RNG_H
 
@@ -71,8 +74,13 @@ inline RngKey rng_key(uint seed, uint pixel, uint sample_index) {
     return k;
 }
 
+// The 32-bit hash word of one dimension.
+inline uint rng_get_bits(RngKey k, uint dimension) {
+    return pcg4d(uvec4(k.pixel, k.sample_index, dimension, k.seed)).x;
+}
+
 inline float rng_get(RngKey k, uint dimension) {
-    return uint_to_unit_float(pcg4d(uvec4(k.pixel, k.sample_index, dimension, k.seed)).x);
+    return uint_to_unit_float(rng_get_bits(k, dimension));
 }
 
 inline uint rng_bounce_dim(uint bounce, uint k) {
@@ -81,6 +89,10 @@ inline uint rng_bounce_dim(uint bounce, uint k) {
 
 inline float rng_bounce(RngKey key, uint bounce, uint k) {
     return rng_get(key, rng_bounce_dim(bounce, k));
+}
+
+inline uint rng_bounce_bits(RngKey key, uint bounce, uint k) {
+    return rng_get_bits(key, rng_bounce_dim(bounce, k));
 }
 
 TP_NAMESPACE_END

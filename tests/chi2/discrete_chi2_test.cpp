@@ -1,5 +1,5 @@
 // Chi-square test of discrete selection: the alias tables of scene/alias_table.h sampled with
-// shared/sampling.h's alias_slot + alias_resolve (light selection, environment-map pixels)
+// shared/sampling.h's alias_slot_from_bits + alias_resolve (light selection, environment-map pixels)
 // must pick item i with probability w_i / sum(w).
 #include "chi2/suite.h"
 
@@ -18,7 +18,7 @@ std::vector<uint64_t> alias_counts(const std::vector<tp::AliasEntry>& table, uin
     Uniform u(seed);
     std::vector<uint64_t> counts(table.size(), 0);
     for (uint64_t i = 0; i < n; ++i) {
-        const uint32_t slot = tp::alias_slot(u.next(), uint32_t(table.size()));
+        const uint32_t slot = tp::alias_slot_from_bits(u.bits(), uint32_t(table.size()));
         const tp::AliasEntry& e = table[slot];
         ++counts[tp::alias_resolve(slot, e.prob, e.alias, u.next())];
     }

@@ -132,7 +132,7 @@ TEST_CASE("power: an alias table 5 % off on one weight is rejected", "[chi2][pow
     Uniform u(907);
     std::vector<uint64_t> counts(w.size(), 0);
     for (uint64_t i = 0; i < kSamples; ++i) {
-        const uint32_t slot = tp::alias_slot(u.next(), uint32_t(w.size()));
+        const uint32_t slot = tp::alias_slot_from_bits(u.bits(), uint32_t(w.size()));
         ++counts[tp::alias_resolve(slot, table[slot].prob, table[slot].alias, u.next())];
     }
     const double sum = std::accumulate(w.begin(), w.end(), 0.0);

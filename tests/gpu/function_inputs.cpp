@@ -145,6 +145,9 @@ void make_input(uint32_t id, InputGen& g, FnIn& x) {
     case FN_RNG_KEY:
     case FN_RNG_GET:
     case FN_RNG_BOUNCE:
+    case FN_UMUL_HI:
+    case FN_RNG_GET_BITS:
+    case FN_RNG_BOUNCE_BITS:
     case FN_ALIAS_RESOLVE:
         x.u = uvec4(g.u32(), g.u32(), g.u32(), g.u32());
         x.f[0] = vec4(g.uni(), g.uni(), 0.0f, 0.0f);
@@ -170,8 +173,8 @@ void make_input(uint32_t id, InputGen& g, FnIn& x) {
         x.f[0] = vec4(g.uni(), g.uni(), g.chance(0.1f) ? 0.0f : g.log_uniform(0.5f, 1e5f), 0.0f);
         break;
     case FN_ALIAS_SLOT:
-        x.f[0].x = g.uni();
         x.u.x = 1 + g.below(1000000);
+        x.u.y = g.u32();
         break;
     case FN_BSDF_SAMPLE_NONE:
     case FN_LIGHT_SAMPLE_NONE:

@@ -178,6 +178,9 @@ std::vector<Case> cases() {
     c.push_back({FN_RNG_GET, "rng_get", exact});
     c.push_back({FN_RNG_BOUNCE_DIM, "rng_bounce_dim", exact});
     c.push_back({FN_RNG_BOUNCE, "rng_bounce", exact});
+    c.push_back({FN_UMUL_HI, "umul_hi", exact});
+    c.push_back({FN_RNG_GET_BITS, "rng_get_bits", exact});
+    c.push_back({FN_RNG_BOUNCE_BITS, "rng_bounce_bits", exact});
     // cos/sin(2 pi u2) (2^-11) times sin(theta) = sqrt(u1); cos(theta) = sqrt(1 - u1).
     c.push_back({FN_SAMPLE_COSINE_HEMISPHERE, "sample_cosine_hemisphere",
                  [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
@@ -216,8 +219,8 @@ std::vector<Case> cases() {
                      k.close("b1", gpu.f[0].x, cpu.f[0].x, 0, kSqrtRel + 2.0 * kU);
                      k.close("b2", gpu.f[0].y, cpu.f[0].y, 0, kSqrtRel + 2.0 * kU);
                  }});
-    // u * float(n): one correctly rounded product, then truncation.
-    c.push_back({FN_ALIAS_SLOT, "alias_slot", exact});
+    // Integer arithmetic only (the high word of a 32 x 32 -> 64-bit product).
+    c.push_back({FN_ALIAS_SLOT, "alias_slot_from_bits", exact});
     c.push_back({FN_ALIAS_RESOLVE, "alias_resolve", exact});
     c.push_back({FN_BSDF_SAMPLE_NONE, "bsdf_sample_none", exact});
     c.push_back({FN_MIRROR_DIRECTION, "mirror_direction",

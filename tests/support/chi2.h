@@ -151,6 +151,8 @@ class Uniform {
   public:
     explicit Uniform(uint64_t seed) : gen_(seed) {}
     float next() { return float(uint32_t(gen_()) >> 8) * (1.0f / 16777216.0f); }
+    // A whole 32-bit word, as rng_get_bits gives the alias-table slot choice.
+    uint32_t bits() { return uint32_t(gen_()); }
     glm::vec4 next4() {
         const float a = next(), b = next(), c = next();
         return glm::vec4(a, b, c, next());

@@ -115,7 +115,10 @@ const uint FN_RAY_INVERSE_DIRECTION = 79u;
 const uint FN_INTERSECT_AABB = 80u;
 const uint FN_WATERTIGHT_RAY = 81u;
 const uint FN_INTERSECT_TRIANGLE = 82u;
-const uint FN_COUNT = 83u;
+const uint FN_UMUL_HI = 83u;
+const uint FN_RNG_GET_BITS = 84u;
+const uint FN_RNG_BOUNCE_BITS = 85u;
+const uint FN_COUNT = 86u;
 
 // ---- argument unpacking ----------------------------------------------------------------------
 inline vec3 fn3(FnIn x, uint i) {
@@ -283,6 +286,15 @@ inline FnOut run_function(uint id, FnIn x) {
     case FN_RNG_GET:
         o.f[0].x = rng_get(rng_key(x.u.x, x.u.y, x.u.z), x.u.w);
         break;
+    case FN_UMUL_HI:
+        o.u.x = umul_hi(x.u.x, x.u.y);
+        break;
+    case FN_RNG_GET_BITS:
+        o.u.x = rng_get_bits(rng_key(x.u.x, x.u.y, x.u.z), x.u.w);
+        break;
+    case FN_RNG_BOUNCE_BITS:
+        o.u.x = rng_bounce_bits(rng_key(x.u.x, x.u.y, x.u.z), x.u.w & 0xFFu, (x.u.w >> 8u) % 10u);
+        break;
     case FN_RNG_BOUNCE_DIM:
         o.u.x = rng_bounce_dim(x.u.x, x.u.y);
         break;
@@ -313,7 +325,7 @@ inline FnOut run_function(uint id, FnIn x) {
         break;
     }
     case FN_ALIAS_SLOT:
-        o.u.x = alias_slot(a.x, x.u.x);
+        o.u.x = alias_slot_from_bits(x.u.y, x.u.x);
         break;
     case FN_ALIAS_RESOLVE:
         o.u.x = alias_resolve(x.u.x, a.x, x.u.y, a.y);

@@ -70,7 +70,7 @@ void main() {
         break;
     }
     case DRAW_ENV_MAP: {
-        uint slot = alias_slot(u.x, push.table_size);
+        uint slot = alias_slot_from_bits(rng_get_bits(key, 0u), push.table_size);
         AliasEntry e = table[slot];
         uint pixel = alias_resolve(slot, e.prob, e.alias, u.y);
         LightSample ls = sample_environment_map(pixel, table[pixel].pdf, p.u.x, p.u.y, p.f[0].x,
@@ -79,7 +79,7 @@ void main() {
         break;
     }
     case DRAW_ALIAS: {
-        uint slot = alias_slot(u.x, push.table_size);
+        uint slot = alias_slot_from_bits(rng_get_bits(key, 0u), push.table_size);
         AliasEntry e = table[slot];
         r = vec4(float(alias_resolve(slot, e.prob, e.alias, u.y)), 0.0f, 0.0f, 1.0f);
         break;
