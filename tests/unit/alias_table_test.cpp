@@ -1,6 +1,6 @@
 // The alias tables of scene/alias_table.h (Vose's construction) and the slot choice of
-// shared/sampling.h (alias_slot_from_bits): the table reproduces the weights exactly up to the rounding of its float
-// entries, and zero weights are never chosen.
+// shared/sampling.h (alias_slot_from_bits): the table reproduces the weights exactly up to the
+// rounding of its float entries, and zero weights are never chosen.
 #include "scene/alias_table.h"
 #include "shared/sampling.h"
 #include "util/error.h"
