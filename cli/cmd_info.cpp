@@ -26,7 +26,9 @@ nlohmann::json vulkan_json() {
             j["driver"] = d.driver;
             j["memory_bytes"] = d.memory_bytes;
             j["modes"] = d.modes();
+            if (d.compute()) j["auto_mode"] = resolve_vk_mode("auto", d);
             if (!d.compute()) j["compute_missing"] = d.compute_missing;
+            if (!d.pipeline()) j["pipeline_missing"] = d.pipeline_missing;
             v["devices"].push_back(j);
         }
     } catch (const RuntimeError& e) {
@@ -63,13 +65,19 @@ Subcommand add_info_command(CLI::App& app) {
                     std::string modes;
                     for (const auto& m : d["modes"])
                         modes += (modes.empty() ? "" : ", ") + m.get<std::string>();
-                    fmt::print("    [{}] {} ({}), Vulkan {}, {}; modes: {}\n",
+                    fmt::print("    [{}] {} ({}), Vulkan {}, {}; modes: {}{}\n",
                                d["index"].get<uint32_t>(), d["name"].get<std::string>(),
                                d["type"].get<std::string>(), d["api_version"].get<std::string>(),
-                               d["driver"].get<std::string>(), modes.empty() ? "none" : modes);
+                               d["driver"].get<std::string>(), modes.empty() ? "none" : modes,
+                               d.contains("auto_mode")
+                                   ? " (auto: " + d["auto_mode"].get<std::string>() + ")"
+                                   : "");
                     if (d.contains("compute_missing"))
                         fmt::print("        compute mode needs: {}\n",
                                    d["compute_missing"].get<std::string>());
+                    if (d.contains("pipeline_missing"))
+                        fmt::print("        pipeline mode needs: {}\n",
+                                   d["pipeline_missing"].get<std::string>());
                 }
                 return 0;
             }};

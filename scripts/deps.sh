@@ -12,7 +12,7 @@ build_pkgs=(
   nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libfmt-dev
   embree-tools
 )
-test_pkgs=(catch2 chromium)
+test_pkgs=(catch2 chromium spirv-tools)
 
 case "${1:-build}" in
   build) pkgs=("${build_pkgs[@]}") ;;

@@ -1,7 +1,8 @@
 // The interface between the Vulkan host code and the render shaders: descriptor binding slots,
 // the push constants of one batch, the per-pixel accumulator and the ray counters. Written in
 // the shared-header dialect (common/shared/lang.h) so that vulkan_rt/ and shaders/ read the
-// same numbers. Every binding is a storage buffer in descriptor set 0.
+// same numbers. Every binding is a storage buffer in descriptor set 0, except the pipeline
+// mode's TLAS (an acceleration-structure descriptor in slot 13, where compute mode has its BVH).
 #ifndef TP_SHADERS_INTERFACE_H
 #define TP_SHADERS_INTERFACE_H
 
@@ -29,6 +30,7 @@ const uint BINDING_TEXELS = 11u;     // vec3[]
 const uint BINDING_ENV_TABLE = 12u;  // AliasEntry[], environment-map pixels
 const uint BINDING_BVH_NODES = 13u;  // BvhNode[] (compute mode)
 const uint BINDING_BVH_TRIS = 14u;   // BvhTriangle[] (compute mode)
+const uint BINDING_TLAS = 13u;       // top-level acceleration structure (pipeline mode; no 14)
 const uint BINDING_ACCUM = 15u;      // PixelAccum[width * height]
 const uint BINDING_COUNTERS = 16u;   // uint[COUNTER_WORDS]
 const uint BINDING_COUNT = 17u;

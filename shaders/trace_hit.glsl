@@ -1,13 +1,16 @@
 // What a closest-hit query returns, in every trace include (trace_bvh.glsl for compute mode;
-// the pipeline mode's closest-hit payload carries the same fields).
+// in pipeline mode this struct is the closest-hit shader's payload, trace_rtx.glsl).
 #ifndef TP_SHADERS_TRACE_HIT_GLSL
 #define TP_SHADERS_TRACE_HIT_GLSL
 
 struct TraceHit {
     float t;
-    uint instance;  // FlatScene instance index
+    uint instance;  // FlatScene instance index; TRACE_MISS in a pipeline payload: no hit
     uint primitive; // triangle index inside the instance's mesh
     vec2 bary;      // weights of vertices 1 and 2
 };
+
+// No instance: instanceCustomIndex has 24 bits, so no real instance index reaches this.
+const uint TRACE_MISS = 0xFFFFFFFFu;
 
 #endif // TP_SHADERS_TRACE_HIT_GLSL

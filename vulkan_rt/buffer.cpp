@@ -23,8 +23,12 @@ Buffer::Buffer(const VulkanContext& ctx, VkDeviceSize size, VkBufferUsageFlags u
             host ? VK_MEMORY_PROPERTY_HOST_VISIBLE_BIT | VK_MEMORY_PROPERTY_HOST_COHERENT_BIT : 0;
         const VkMemoryPropertyFlags preferred =
             host ? VK_MEMORY_PROPERTY_HOST_CACHED_BIT : VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT;
+        VkMemoryAllocateFlagsInfo flags{};
+        flags.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_FLAGS_INFO;
+        flags.flags = VK_MEMORY_ALLOCATE_DEVICE_ADDRESS_BIT;
         VkMemoryAllocateInfo ai{};
         ai.sType = VK_STRUCTURE_TYPE_MEMORY_ALLOCATE_INFO;
+        ai.pNext = (usage & VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT) ? &flags : nullptr;
         ai.allocationSize = req.size;
         ai.memoryTypeIndex = ctx.memory_type(req.memoryTypeBits, required, preferred);
         vk_check(vkAllocateMemory(device_, &ai, nullptr, &memory_), "allocating buffer memory");
@@ -67,23 +71,35 @@ void Buffer::release() {
     mapped_ = nullptr;
 }
 
+VkDeviceAddress Buffer::device_address() const {
+    VkBufferDeviceAddressInfo info{};
+    info.sType = VK_STRUCTURE_TYPE_BUFFER_DEVICE_ADDRESS_INFO;
+    info.buffer = buffer_;
+    return vkGetBufferDeviceAddress(device_, &info);
+}
+
 Buffer Uploader::add(const void* data, size_t bytes, VkBufferUsageFlags usage) {
     Buffer dst(ctx_, bytes, usage | VK_BUFFER_USAGE_TRANSFER_DST_BIT, false);
-    if (bytes == 0) return dst;
+    add_to(dst, 0, data, bytes);
+    return dst;
+}
+
+void Uploader::add_to(const Buffer& dst, VkDeviceSize offset, const void* data, size_t bytes) {
+    if (bytes == 0) return;
     Buffer staging(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_SRC_BIT, true);
     std::memcpy(staging.mapped(), data, bytes);
-    pending_.push_back({std::move(staging), dst.handle(), VkDeviceSize(bytes)});
-    return dst;
+    pending_.push_back({std::move(staging), dst.handle(), offset, VkDeviceSize(bytes)});
 }
 
 void Uploader::flush() {
     if (pending_.empty()) return;
     ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
         for (const Pending& p : pending_) {
-            VkBufferCopy region{0, 0, p.bytes};
+            VkBufferCopy region{0, p.offset, p.bytes};
             vkCmdCopyBuffer(cmd, p.staging.handle(), p.dst, 1, &region);
         }
-        // Make the copies visible to every later shader read.
+        // Make the copies visible to every later shader read (acceleration-structure builds
+        // read their inputs with VK_ACCESS_SHADER_READ_BIT too).
         VkMemoryBarrier barrier{};
         barrier.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
         barrier.srcAccessMask = VK_ACCESS_TRANSFER_WRITE_BIT;

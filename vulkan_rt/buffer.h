@@ -15,6 +15,8 @@ class Buffer {
     Buffer() = default;
     // `host` buffers are host-visible and coherent and stay mapped; the others prefer
     // device-local memory. Size 0 is rounded up to 16 bytes: Vulkan has no empty buffers.
+    // With VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT (pipeline mode only: it needs the
+    // bufferDeviceAddress feature) the memory is allocated for device addresses.
     Buffer(const VulkanContext& ctx, VkDeviceSize size, VkBufferUsageFlags usage, bool host);
     ~Buffer();
     Buffer(Buffer&& o) noexcept;
@@ -23,6 +25,8 @@ class Buffer {
     VkBuffer handle() const { return buffer_; }
     VkDeviceSize size() const { return size_; }
     void* mapped() const { return mapped_; }
+    // vkGetBufferDeviceAddress; the buffer needs VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT.
+    VkDeviceAddress device_address() const;
 
   private:
     void release();
@@ -45,12 +49,17 @@ class Uploader {
         return add(v.data(), v.size() * sizeof(T), usage);
     }
 
+    // Writes `bytes` bytes of `data` at `offset` into an existing buffer (with
+    // VK_BUFFER_USAGE_TRANSFER_DST_BIT) on flush().
+    void add_to(const Buffer& dst, VkDeviceSize offset, const void* data, size_t bytes);
+
     void flush();
 
   private:
     struct Pending {
         Buffer staging;
         VkBuffer dst;
+        VkDeviceSize offset;
         VkDeviceSize bytes;
     };
     const VulkanContext& ctx_;

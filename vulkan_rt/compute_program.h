@@ -2,11 +2,13 @@
 // buffers (bindings 0..n-1) and whose push constants are one block of `push_bytes` bytes.
 #pragma once
 
+#include "vulkan_rt/barriers.h"
+#include "vulkan_rt/buffer.h"
 #include "vulkan_rt/context.h"
+#include "vulkan_rt/pipeline_bindings.h"
 
 #include <cstddef>
 #include <cstdint>
-#include <vector>
 
 namespace tp {
 
@@ -18,8 +20,8 @@ class ComputeProgram {
     ComputeProgram(const ComputeProgram&) = delete;
     ComputeProgram& operator=(const ComputeProgram&) = delete;
 
-    // Points binding i at the whole of buffers[i].
-    void bind(const std::vector<VkBuffer>& buffers);
+    // Points storage-buffer slot `binding` at the whole of `buffer`.
+    void bind(uint32_t binding, const Buffer& buffer) { bindings_.write_buffer(binding, buffer); }
 
     // Binds the pipeline and the set, pushes the constants and dispatches.
     void record_dispatch(VkCommandBuffer cmd, const void* push, uint32_t groups_x,
@@ -27,21 +29,8 @@ class ComputeProgram {
 
   private:
     VkDevice device_;
-    uint32_t binding_count_;
-    uint32_t push_bytes_;
-    VkDescriptorSetLayout set_layout_ = VK_NULL_HANDLE;
-    VkPipelineLayout layout_ = VK_NULL_HANDLE;
+    PipelineBindings bindings_;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
-    VkDescriptorPool pool_ = VK_NULL_HANDLE;
-    VkDescriptorSet set_ = VK_NULL_HANDLE;
-    void release();
 };
-
-// Makes every shader write before it visible to every shader read or write after it, and to
-// transfers (the read-back copy).
-void record_compute_barrier(VkCommandBuffer cmd);
-
-// Makes transfer writes (a read-back copy) visible to the host once the submission completes.
-void record_host_read_barrier(VkCommandBuffer cmd);
 
 } // namespace tp

@@ -1,5 +1,5 @@
-// Compute mode: the path tracer of shaders/render_compute.comp with software BVH traversal,
-// run in progressive batches (batch_planner.h) on an open VulkanContext.
+// Compute mode: the path tracer of shaders/render_compute.comp with software traversal of a
+// BVH built on the host (bvh_builder.h), run by the shared render loop (render_loop.h).
 #pragma once
 
 #include "render/render_options.h"

@@ -101,10 +101,12 @@ std::vector<DeviceInfo> VulkanInstance::devices() const {
     return list;
 }
 
-VulkanContext::VulkanContext(const std::string& selector)
+VulkanContext::VulkanContext(const std::string& selector, const std::string& vk_mode)
     : instance_(std::make_unique<VulkanInstance>()) {
     const std::vector<DeviceInfo> devices = instance_->devices();
     info_ = select_device(devices, selector);
+    mode_ = resolve_vk_mode(vk_mode, info_);
+    const bool ray_tracing = mode_ == "pipeline";
     physical_ = instance_->physical_devices()[info_.index];
 
     VkPhysicalDeviceProperties props;
@@ -133,18 +135,31 @@ VulkanContext::VulkanContext(const std::string& selector)
     qci.queueFamilyIndex = queue_family_;
     qci.queueCount = 1;
     qci.pQueuePriorities = &priority;
+    VkPhysicalDeviceAccelerationStructureFeaturesKHR as{};
+    as.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR;
+    as.accelerationStructure = VK_TRUE;
+    VkPhysicalDeviceRayTracingPipelineFeaturesKHR rt{};
+    rt.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR;
+    rt.pNext = &as;
+    rt.rayTracingPipeline = VK_TRUE;
     VkPhysicalDeviceVulkan12Features f12{};
     f12.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
+    f12.pNext = ray_tracing ? &rt : nullptr;
     f12.scalarBlockLayout = VK_TRUE;
+    f12.bufferDeviceAddress = ray_tracing ? VK_TRUE : VK_FALSE;
     VkPhysicalDeviceFeatures2 features{};
     features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
     features.pNext = &f12;
     features.features.shaderFloat64 = VK_TRUE;
+    const std::vector<const char*> no_extensions;
+    const std::vector<const char*>& extensions = ray_tracing ? pipeline_extensions() : no_extensions;
     VkDeviceCreateInfo dci{};
     dci.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
     dci.pNext = &features;
     dci.queueCreateInfoCount = 1;
     dci.pQueueCreateInfos = &qci;
+    dci.enabledExtensionCount = uint32_t(extensions.size());
+    dci.ppEnabledExtensionNames = extensions.data();
     vk_check(vkCreateDevice(physical_, &dci, nullptr, &device_), "creating the Vulkan device");
     vkGetDeviceQueue(device_, queue_family_, 0, &queue_);
     try {

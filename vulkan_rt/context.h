@@ -1,5 +1,6 @@
 // The Vulkan instance (with the validation layer when requested, validation.h) and, for
-// rendering, one logical device with one compute queue.
+// rendering, one logical device with one compute queue; in pipeline mode with the ray-tracing
+// extensions and features enabled.
 #pragma once
 
 #include "vulkan_rt/device_info.h"
@@ -38,14 +39,16 @@ class VulkanInstance {
 
 class VulkanContext {
   public:
-    // Opens the device that `selector` names (device_info.h, select_device).
-    explicit VulkanContext(const std::string& selector);
+    // Opens the device that `selector` names (device_info.h, select_device) for the mode that
+    // `vk_mode` (--vk-mode) resolves to there (resolve_vk_mode).
+    explicit VulkanContext(const std::string& selector, const std::string& vk_mode = "compute");
     ~VulkanContext();
     VulkanContext(const VulkanContext&) = delete;
     VulkanContext& operator=(const VulkanContext&) = delete;
 
     const VulkanInstance& instance() const { return *instance_; }
     const DeviceInfo& info() const { return info_; }
+    const std::string& mode() const { return mode_; } // "compute" or "pipeline"
     VkPhysicalDevice physical() const { return physical_; }
     VkDevice device() const { return device_; }
     VkQueue queue() const { return queue_; }
@@ -64,6 +67,7 @@ class VulkanContext {
     void release();
     std::unique_ptr<VulkanInstance> instance_;
     DeviceInfo info_;
+    std::string mode_;
     VkPhysicalDevice physical_ = VK_NULL_HANDLE;
     VkPhysicalDeviceLimits limits_{};
     VkPhysicalDeviceMemoryProperties memory_{};

@@ -11,10 +11,14 @@
 
 namespace tp {
 
+bool DeviceCaps::has(const char* extension) const {
+    return std::find(extensions.begin(), extensions.end(), extension) != extensions.end();
+}
+
 std::vector<std::string> DeviceInfo::modes() const {
     std::vector<std::string> m;
     if (compute()) m.push_back("compute");
-    if (pipeline) m.push_back("pipeline");
+    if (pipeline()) m.push_back("pipeline");
     return m;
 }
 
@@ -25,8 +29,10 @@ std::string vk_version_string(uint32_t v) {
 
 namespace {
 
-bool has_extension(const DeviceCaps& caps, const char* name) {
-    return std::find(caps.extensions.begin(), caps.extensions.end(), name) != caps.extensions.end();
+std::string join(const std::vector<std::string>& items) {
+    std::string s;
+    for (const std::string& m : items) s += (s.empty() ? "" : ", ") + m;
+    return s;
 }
 
 int type_rank(const std::string& type) {
@@ -66,15 +72,43 @@ std::string compute_mode_missing(const DeviceCaps& caps) {
     if (!caps.subgroup_arithmetic) missing.push_back("subgroup arithmetic in compute shaders");
     if (caps.max_storage_buffers < BINDING_COUNT)
         missing.push_back(fmt::format("{} storage buffers per stage", BINDING_COUNT));
-    std::string s;
-    for (const std::string& m : missing) s += (s.empty() ? "" : ", ") + m;
-    return s;
+    return join(missing);
 }
 
-bool pipeline_mode_supported(const DeviceCaps& caps) {
-    return has_extension(caps, VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME) &&
-           has_extension(caps, VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME) &&
-           has_extension(caps, VK_KHR_BUFFER_DEVICE_ADDRESS_EXTENSION_NAME);
+const std::vector<const char*>& pipeline_extensions() {
+    static const std::vector<const char*> names = {
+        VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME, VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
+        VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
+    return names;
+}
+
+std::string pipeline_mode_missing(const DeviceCaps& caps) {
+    std::vector<std::string> missing;
+    for (const char* ext : pipeline_extensions())
+        if (!caps.has(ext)) missing.push_back(ext);
+    // The features matter only where the extensions exist.
+    if (missing.empty()) {
+        if (!caps.acceleration_structure) missing.push_back("accelerationStructure");
+        if (!caps.ray_tracing_pipeline) missing.push_back("rayTracingPipeline");
+        if (!caps.buffer_device_address) missing.push_back("bufferDeviceAddress");
+        if (!caps.subgroup_arithmetic_raygen)
+            missing.push_back("subgroup arithmetic in ray-generation shaders");
+    }
+    const std::string compute = compute_mode_missing(caps);
+    if (!compute.empty()) missing.push_back(compute);
+    return join(missing);
+}
+
+std::string resolve_vk_mode(const std::string& requested, const DeviceInfo& d) {
+    if (requested == "compute") return "compute";
+    if (requested == "auto") return d.pipeline() ? "pipeline" : "compute";
+    if (requested != "pipeline")
+        input_error("--vk-mode {}: expected auto, compute or pipeline", requested);
+    if (!d.pipeline())
+        runtime_error("--vk-mode pipeline: Vulkan device {} ({}) cannot run the ray-tracing "
+                      "pipeline mode: it lacks {}; use --vk-mode compute (auto picks it there)",
+                      d.index, d.name, d.pipeline_missing);
+    return "pipeline";
 }
 
 const DeviceInfo& select_device(const std::vector<DeviceInfo>& devices,

@@ -17,6 +17,14 @@ struct DeviceCaps {
     bool compute_queue = false;
     uint32_t max_storage_buffers = 0; // per shader stage
     std::vector<std::string> extensions;
+    // Pipeline mode: the features of its extensions, and the ray-counter reduction of
+    // shaders/accumulate.glsl in the ray-generation shader.
+    bool acceleration_structure = false; // VkPhysicalDeviceAccelerationStructureFeaturesKHR
+    bool ray_tracing_pipeline = false;   // VkPhysicalDeviceRayTracingPipelineFeaturesKHR
+    bool buffer_device_address = false;  // Vulkan 1.2: SBT, geometry and instance addresses
+    bool subgroup_arithmetic_raygen = false;
+
+    bool has(const char* extension) const;
 };
 
 struct DeviceInfo {
@@ -27,10 +35,11 @@ struct DeviceInfo {
     std::string driver;
     uint64_t memory_bytes = 0; // device-local heaps
     DeviceCaps caps;
-    std::string compute_missing; // what compute mode lacks on this device; empty: it runs
-    bool pipeline = false;       // ray-tracing pipeline mode possible
+    std::string compute_missing;  // what compute mode lacks on this device; empty: it runs
+    std::string pipeline_missing; // the same for the ray-tracing pipeline mode
 
     bool compute() const { return compute_missing.empty(); }
+    bool pipeline() const { return pipeline_missing.empty(); }
     std::vector<std::string> modes() const;
 };
 
@@ -40,8 +49,19 @@ std::string vk_version_string(uint32_t version);
 // Empty when compute mode can run; otherwise the missing capabilities, comma-separated.
 std::string compute_mode_missing(const DeviceCaps& caps);
 
-// VK_KHR_ray_tracing_pipeline + VK_KHR_acceleration_structure + VK_KHR_buffer_device_address.
-bool pipeline_mode_supported(const DeviceCaps& caps);
+// The device extensions pipeline mode enables. Their other dependencies (buffer device address,
+// descriptor indexing, SPIR-V 1.4, float controls) are Vulkan 1.2 core, which compute mode
+// already requires.
+const std::vector<const char*>& pipeline_extensions();
+
+// Empty when pipeline mode can run: its extensions and their features, subgroup arithmetic in
+// ray-generation shaders, and everything compute mode needs (the same shading code runs).
+std::string pipeline_mode_missing(const DeviceCaps& caps);
+
+// The mode that runs for a --vk-mode request (auto, compute or pipeline) on a device: auto is
+// pipeline where the device supports it, else compute. Throws RuntimeError (exit code 3) for
+// pipeline on a device without it, naming what is missing; InputError for another request.
+std::string resolve_vk_mode(const std::string& requested, const DeviceInfo& device);
 
 // The device a --device selector names: an index, or a case-insensitive substring of the
 // name; empty picks the first compute-capable device of the best type (discrete, integrated,

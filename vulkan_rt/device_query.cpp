@@ -63,18 +63,36 @@ DeviceInfo query_device(VkPhysicalDevice device, uint32_t index) {
         props2.pNext = &subgroup;
         vkGetPhysicalDeviceProperties2(device, &props2);
         info.driver = fmt::format("{} {}", driver.driverName, driver.driverInfo);
+        const bool arithmetic = subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
         caps.subgroup_arithmetic =
-            (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT) &&
-            (subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT);
+            arithmetic && (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT);
+        caps.subgroup_arithmetic_raygen =
+            arithmetic && (subgroup.supportedStages & VK_SHADER_STAGE_RAYGEN_BIT_KHR);
 
+        // Extension feature structures may only be chained where the extension exists.
+        VkPhysicalDeviceAccelerationStructureFeaturesKHR as{};
+        as.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR;
+        VkPhysicalDeviceRayTracingPipelineFeaturesKHR rt{};
+        rt.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR;
         VkPhysicalDeviceVulkan12Features f12{};
         f12.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
+        if (caps.has(VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME)) {
+            as.pNext = f12.pNext;
+            f12.pNext = &as;
+        }
+        if (caps.has(VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME)) {
+            rt.pNext = f12.pNext;
+            f12.pNext = &rt;
+        }
         VkPhysicalDeviceFeatures2 features{};
         features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
         features.pNext = &f12;
         vkGetPhysicalDeviceFeatures2(device, &features);
         caps.float64 = features.features.shaderFloat64 == VK_TRUE;
         caps.scalar_layout = f12.scalarBlockLayout == VK_TRUE;
+        caps.buffer_device_address = f12.bufferDeviceAddress == VK_TRUE;
+        caps.acceleration_structure = as.accelerationStructure == VK_TRUE;
+        caps.ray_tracing_pipeline = rt.rayTracingPipeline == VK_TRUE;
     }
 
     uint32_t nq = 0;
@@ -91,7 +109,7 @@ DeviceInfo query_device(VkPhysicalDevice device, uint32_t index) {
             info.memory_bytes += mem.memoryHeaps[i].size;
 
     info.compute_missing = compute_mode_missing(caps);
-    info.pipeline = pipeline_mode_supported(caps);
+    info.pipeline_missing = pipeline_mode_missing(caps);
     return info;
 }
 

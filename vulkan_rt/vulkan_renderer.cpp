@@ -3,6 +3,7 @@
 #include "util/error.h"
 #include "vulkan_rt/compute_renderer.h"
 #include "vulkan_rt/context.h"
+#include "vulkan_rt/pipeline_renderer.h"
 
 namespace tp {
 namespace {
@@ -15,19 +16,11 @@ void check_validation(const VulkanInstance& instance) {
 
 } // namespace
 
-std::string resolve_vk_mode(const std::string& requested, const DeviceInfo&) {
-    if (requested == "auto" || requested == "compute") return "compute";
-    if (requested == "pipeline")
-        input_error("--vk-mode pipeline: the ray-tracing pipeline mode is not part of this build "
-                    "yet; use --vk-mode compute");
-    input_error("--vk-mode {}: expected auto, compute or pipeline", requested);
-}
-
 RenderResult render_vulkan(const FlatScene& scene, const RenderOptions& options,
                            const VulkanOptions& vk) {
-    const VulkanContext ctx(vk.device);
-    resolve_vk_mode(vk.mode, ctx.info());
-    RenderResult r = render_compute(ctx, scene, options);
+    const VulkanContext ctx(vk.device, vk.mode);
+    RenderResult r = ctx.mode() == "pipeline" ? render_pipeline(ctx, scene, options)
+                                              : render_compute(ctx, scene, options);
     r.stats.extra["vk_mode_requested"] = vk.mode;
     r.stats.extra["driver"] = ctx.info().driver;
     r.stats.extra["validation"] = ctx.instance().validation_enabled() ? "on" : "off";

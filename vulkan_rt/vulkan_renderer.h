@@ -12,15 +12,12 @@ namespace tp {
 
 struct VulkanOptions {
     std::string device;        // --device: index or name substring; empty: the best device
-    std::string mode = "auto"; // --vk-mode: auto, compute or pipeline
+    std::string mode = "auto"; // --vk-mode: auto, compute or pipeline (resolve_vk_mode)
 };
 
-// The mode that runs for a --vk-mode request on a device: "compute" for auto and compute;
-// pipeline mode is not part of this build yet (InputError).
-std::string resolve_vk_mode(const std::string& requested, const DeviceInfo& device);
-
-// Renders on the selected device. Throws RuntimeError (exit code 3) for Vulkan failures and
-// when the validation layer reported anything (validation.h).
+// Renders on the selected device in the mode the request resolves to there (RenderStats::mode
+// says which ran). Throws RuntimeError (exit code 3) for Vulkan failures, for pipeline mode on a
+// device without it, and when the validation layer reported anything (validation.h).
 RenderResult render_vulkan(const FlatScene& scene, const RenderOptions& options,
                            const VulkanOptions& vk);
 

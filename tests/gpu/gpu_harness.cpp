@@ -20,7 +20,7 @@ std::vector<std::vector<uint8_t>> run_shader(const uint32_t* spirv, size_t spirv
                                              const std::vector<HostBytes>& inputs,
                                              const std::vector<size_t>& output_bytes,
                                              const void* push, uint32_t push_bytes, uint32_t groups,
-                                             const std::vector<VkBuffer>& device) {
+                                             const std::vector<const Buffer*>& device) {
     const VulkanContext& ctx = gpu_context();
     const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
                                      VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
@@ -37,10 +37,10 @@ std::vector<std::vector<uint8_t>> run_shader(const uint32_t* spirv, size_t spirv
 
     ComputeProgram program(ctx, spirv, spirv_bytes,
                            uint32_t(device.size() + inputs.size() + outputs.size()), push_bytes);
-    std::vector<VkBuffer> handles = device;
-    for (const Buffer& b : buffers) handles.push_back(b.handle());
-    for (const Buffer& b : outputs) handles.push_back(b.handle());
-    program.bind(handles);
+    std::vector<const Buffer*> bound = device;
+    for (const Buffer& b : buffers) bound.push_back(&b);
+    for (const Buffer& b : outputs) bound.push_back(&b);
+    for (uint32_t i = 0; i < bound.size(); ++i) program.bind(i, *bound[i]);
     ctx.submit_and_wait([&](VkCommandBuffer cmd) {
         for (const Buffer& b : outputs) vkCmdFillBuffer(cmd, b.handle(), 0, VK_WHOLE_SIZE, 0);
         record_compute_barrier(cmd);

@@ -3,6 +3,7 @@
 // call and validation_messages() must stay 0.
 #pragma once
 
+#include "vulkan_rt/buffer.h"
 #include "vulkan_rt/context.h"
 
 #include <cstddef>
@@ -32,7 +33,7 @@ std::vector<std::vector<uint8_t>> run_shader(const uint32_t* spirv, size_t spirv
                                              const std::vector<HostBytes>& inputs,
                                              const std::vector<size_t>& output_bytes,
                                              const void* push, uint32_t push_bytes, uint32_t groups,
-                                             const std::vector<VkBuffer>& device = {});
+                                             const std::vector<const Buffer*>& device = {});
 
 // The output as an array of T.
 template <typename T>

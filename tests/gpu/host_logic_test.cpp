@@ -1,6 +1,7 @@
 // The Vulkan backend's host-side logic, without a device: VkResult -> error mapping (device
-// lost and out of memory become RuntimeError, exit code 3), device selection, mode selection,
-// batch planning, the BVH builder's invariants and the watertightness of the triangle test.
+// lost and out of memory become RuntimeError, exit code 3), device selection, compute mode's
+// requirements (pipeline mode's and mode selection: pipeline_logic_test.cpp), batch planning,
+// the BVH builder's invariants and the watertightness of the triangle test.
 #include "scene/flatten.h"
 #include "scene/generators.h"
 #include "shared/intersect.h"
@@ -10,7 +11,6 @@
 #include "vulkan_rt/bvh_builder.h"
 #include "vulkan_rt/device_info.h"
 #include "vulkan_rt/vk_error.h"
-#include "vulkan_rt/vulkan_renderer.h"
 
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -69,24 +69,15 @@ TEST_CASE("device selection by index or name substring or best type", "[gpu]") {
     CHECK_THROWS_WITH(select_device({}, ""), Catch::Contains("no Vulkan device"));
 }
 
-TEST_CASE("modes a device supports and the mode a request resolves to", "[gpu]") {
+TEST_CASE("what compute mode needs", "[gpu]") {
     DeviceCaps caps;
     caps.api_version = VK_API_VERSION_1_2;
     caps.float64 = caps.scalar_layout = caps.subgroup_arithmetic = caps.compute_queue = true;
     caps.max_storage_buffers = 32;
     CHECK(compute_mode_missing(caps).empty());
-    CHECK_FALSE(pipeline_mode_supported(caps));
-    caps.extensions = {"VK_KHR_ray_tracing_pipeline", "VK_KHR_acceleration_structure",
-                       "VK_KHR_buffer_device_address"};
-    CHECK(pipeline_mode_supported(caps));
     caps.float64 = false;
     caps.api_version = VK_API_VERSION_1_1;
     CHECK(compute_mode_missing(caps) == "Vulkan 1.2, shaderFloat64");
-
-    const DeviceInfo d = device(0, "x", "cpu");
-    CHECK(resolve_vk_mode("auto", d) == "compute");
-    CHECK(resolve_vk_mode("compute", d) == "compute");
-    CHECK_THROWS_AS(resolve_vk_mode("pipeline", d), InputError);
 }
 
 TEST_CASE("batches cover every pixel-sample exactly once in passes", "[gpu]") {

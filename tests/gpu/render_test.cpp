@@ -1,8 +1,10 @@
 // The Vulkan backend through the command line, as scripts and `make demo` use it: each bundled
 // scene rendered on both backends must be statistically consistent under `twinpath compare`;
 // with the same seed the two follow the same paths; bad devices and modes fail with exit code
-// 2; `twinpath info --json` lists the device; the statistics report what ran. CTest runs this
-// with TWINPATH_VALIDATION=1, and a render that drew a validation message exits with 3.
+// 2, pipeline mode on a device without it with 3; `twinpath info --json` lists the device and
+// the mode auto picks; the statistics report what ran. Pipeline mode itself runs only where the
+// device has it (not lavapipe). CTest runs this with TWINPATH_VALIDATION=1, and a render that
+// drew a validation message exits with 3.
 #include "image/exr_io.h"
 #include "support/test_paths.h"
 
@@ -40,9 +42,16 @@ bool compare_available() {
     return r.exit_code == 0;
 }
 
-void check_vulkan_stats(const nlohmann::json& s, uint64_t pixel_samples) {
+// The mode `twinpath info` says --vk-mode auto picks on the default device (index 0 here).
+std::string auto_mode() {
+    const ProcessResult r = run(twinpath("info --json"));
+    REQUIRE(r.exit_code == 0);
+    return nlohmann::json::parse(r.out)["backends"]["vulkan"]["devices"][0]["auto_mode"];
+}
+
+void check_vulkan_stats(const nlohmann::json& s, uint64_t pixel_samples, const char* mode) {
     CHECK(s["backend"] == "vulkan");
-    CHECK(s["mode"] == "compute");
+    CHECK(s["mode"] == mode);
     CHECK(s["nan_samples"] == 0);
     CHECK(s["samples"].get<uint64_t>() == pixel_samples);
     CHECK(s["rays"]["camera"].get<uint64_t>() == pixel_samples);
@@ -73,7 +82,7 @@ TEST_CASE("Vulkan and CPU renders of every bundled scene are consistent", "[gpu]
                 render(c.name, "vulkan", dir, "vulkan", common + " --seed 6 --vk-mode compute");
             INFO(vk.out);
             REQUIRE(vk.exit_code == 0);
-            check_vulkan_stats(read_json(dir + "/vulkan.json"), 32ull * 32 * c.spp);
+            check_vulkan_stats(read_json(dir + "/vulkan.json"), 32ull * 32 * c.spp, "compute");
             const ProcessResult cpu = render(c.name, "cpu", dir, "cpu", common + " --seed 5");
             REQUIRE(cpu.exit_code == 0);
             if (!compare_available()) continue;
@@ -106,7 +115,7 @@ TEST_CASE("with the same seed both backends trace the same paths", "[gpu]") {
             }
             INFO(differ << " of " << total << " pixel-channels differ");
             CHECK(differ <= total / 100);
-            CHECK(a.strings.at("twinpath:backend") == "vulkan/compute");
+            CHECK(a.strings.at("twinpath:backend") == "vulkan/" + auto_mode());
         }
     }
 }
@@ -120,9 +129,56 @@ TEST_CASE("bad --device and --vk-mode fail with exit code 2 and a clear message"
     const ProcessResult name = render("cornell", "vulkan", dir, "b", "--spp 1 --device nosuchgpu");
     CHECK(name.exit_code == 2);
     CHECK_THAT(name.out, Catch::Contains("no Vulkan device name contains it"));
-    const ProcessResult mode = render("cornell", "vulkan", dir, "c", "--spp 1 --vk-mode pipeline");
+    const ProcessResult mode = render("cornell", "vulkan", dir, "c", "--spp 1 --vk-mode rtx");
     CHECK(mode.exit_code == 2);
-    CHECK_THAT(mode.out, Catch::Contains("pipeline"));
+    CHECK_THAT(mode.out, Catch::Contains("--vk-mode"));
+}
+
+TEST_CASE("vk-mode auto runs what info promises and pipeline needs a device with it", "[gpu]") {
+    const std::string dir = temp_dir("vk-auto");
+    const std::string expected = auto_mode(); // compute on lavapipe
+    REQUIRE(render("cornell", "vulkan", dir, "a", "--spp 1 --width 8 --height 8").exit_code == 0);
+    const nlohmann::json s = read_json(dir + "/a.json");
+    CHECK(s["mode"] == expected);
+    CHECK(s["extra"]["vk_mode_requested"] == "auto");
+    CHECK(read_exr(dir + "/a.exr").strings.at("twinpath:backend") == "vulkan/" + expected);
+
+    const ProcessResult p =
+        render("cornell", "vulkan", dir, "p", "--spp 1 --width 8 --height 8 --vk-mode pipeline");
+    INFO(p.out);
+    if (expected == "pipeline") {
+        CHECK(p.exit_code == 0);
+    } else {
+        // A device without the ray-tracing extensions: a runtime failure (exit 3), not bad
+        // usage, with what is missing and what to use instead; no image.
+        CHECK(p.exit_code == 3);
+        CHECK_THAT(p.out, Catch::Contains("cannot run the ray-tracing pipeline mode") &&
+                              Catch::Contains("--vk-mode compute"));
+        CHECK_FALSE(std::ifstream(dir + "/p.exr").good());
+    }
+}
+
+TEST_CASE("pipeline mode agrees with compute mode and the CPU where the device has it", "[gpu]") {
+    if (auto_mode() != "pipeline") {
+        WARN("the Vulkan device has no ray-tracing pipeline: pipeline mode is SKIPPED here (it "
+             "is checked on a GPU by scripts/gpu_check.sh, docs/gpu.md)");
+        return;
+    }
+    for (const char* scene : {"cornell", "cornell_glossy", "spheres", "furnace"}) {
+        SECTION(scene) {
+            const std::string dir = temp_dir(std::string("rt-") + scene);
+            const std::string common = "--width 32 --height 32 --spp 256";
+            REQUIRE(render(scene, "vulkan", dir, "rt", common + " --seed 7 --vk-mode pipeline")
+                        .exit_code == 0);
+            check_vulkan_stats(read_json(dir + "/rt.json"), 32ull * 32 * 256, "pipeline");
+            REQUIRE(render(scene, "cpu", dir, "cpu", common + " --seed 8").exit_code == 0);
+            const ProcessResult cmp = run(twinpath(fmt::format(
+                "compare {} {} --alpha 0.01", shell_quote(dir + "/rt.exr"),
+                shell_quote(dir + "/cpu.exr"))));
+            INFO(cmp.out);
+            CHECK(cmp.exit_code == 0);
+        }
+    }
 }
 
 TEST_CASE("without a Vulkan driver a render fails with exit code 3 and info still works", "[gpu]") {

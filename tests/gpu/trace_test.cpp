@@ -83,12 +83,15 @@ std::vector<Ray> random_rays(const FlatScene& scene, size_t n, uint32_t seed) {
 void compare_with_embree(const FlatScene& scene) {
     const BvhBuild bvh = build_bvh(scene);
     const RenderParams params = scene.params;
-    const SceneBuffers sb = upload_scene(gpu_context(), scene, params, bvh);
+    const SceneBuffers sb = upload_scene(gpu_context(), scene, params, bvh.mesh_roots, 0);
+    const BvhBuffers bvh_buffers = upload_bvh(gpu_context(), bvh);
     const Buffer dummy(gpu_context(), 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
-    std::vector<VkBuffer> bound;
-    for (const Buffer& b : sb.slots) bound.push_back(b.handle());
-    bound.push_back(dummy.handle()); // accumulators
-    bound.push_back(dummy.handle()); // counters
+    std::vector<const Buffer*> bound;
+    for (const Buffer& b : sb.slots) bound.push_back(&b);
+    bound.push_back(&bvh_buffers.nodes);
+    bound.push_back(&bvh_buffers.triangles);
+    bound.push_back(&dummy); // accumulators
+    bound.push_back(&dummy); // counters
 
     const std::vector<Ray> rays = random_rays(scene, 20000, 11);
     BatchParams bp{};

@@ -1,0 +1,52 @@
+// The pipeline mode's trace include: the same two ray queries as trace_bvh.glsl, answered by
+// traceRayEXT against the top-level acceleration structure (vulkan_rt/accel_structures.cpp),
+// the way nvpro-samples vk_raytrace swaps traceray_rq.glsl for traceray_rtx.glsl. Only the
+// ray-generation shader includes it, so it is the only caller of traceRayEXT: the hit and miss
+// shaders just fill a payload, and the path loop stays one loop in one invocation (recursive
+// tracing from hit shaders would need a stack per bounce and lose the scheduler's freedom;
+// iOrange's rtxON part 2 and the thesis, sec. 4, make the same choice).
+//
+//   bool trace_closest(Ray ray, out TraceHit hit)  nearest hit in [0, ray.tmax]
+//   bool trace_occluded(Ray ray)                   any hit in [0, ray.tmax]
+//
+// Vulkan's interval is closed where the BVH's is open, (0, tmax); the two differ only for a hit
+// exactly at an end point. Ray origins leave surfaces by the ULP offset (shared/offset.h) and
+// shadow rays end at an offset light point (shared/path.h), so neither end lies on a surface.
+// All geometry is opaque (built with VK_GEOMETRY_OPAQUE_BIT_KHR; the rays say so too), so no
+// any-hit shader ever runs. gl_HitTEXT is the parameter of the world-space ray: the instance
+// transform leaves t unchanged, as in trace_bvh.glsl.
+#ifndef TP_SHADERS_TRACE_RTX_GLSL
+#define TP_SHADERS_TRACE_RTX_GLSL
+
+#extension GL_EXT_ray_tracing : require
+
+#include "bindings.glsl"
+#include "rt_interface.h"
+#include "shared/path.h"
+#include "trace_hit.glsl"
+
+layout(set = 0, binding = BINDING_TLAS) uniform accelerationStructureEXT tlas;
+
+layout(location = RT_PAYLOAD_HIT) rayPayloadEXT TraceHit rt_hit;
+layout(location = RT_PAYLOAD_SHADOW) rayPayloadEXT uint rt_occluded;
+
+bool trace_closest(Ray ray, out TraceHit hit) {
+    traceRayEXT(tlas, gl_RayFlagsOpaqueEXT, 0xFFu, 0u, 0u, RT_MISS_CLOSEST, ray.origin, 0.0f,
+                ray.dir, ray.tmax, RT_PAYLOAD_HIT);
+    hit = rt_hit;
+    return rt_hit.instance != TRACE_MISS;
+}
+
+// The first hit found ends the search and no closest-hit shader runs; only the shadow miss
+// shader writes the payload, clearing the "occluded" set here.
+bool trace_occluded(Ray ray) {
+    rt_occluded = 1u;
+    traceRayEXT(tlas,
+                gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT |
+                    gl_RayFlagsOpaqueEXT,
+                0xFFu, 0u, 0u, RT_MISS_SHADOW, ray.origin, 0.0f, ray.dir, ray.tmax,
+                RT_PAYLOAD_SHADOW);
+    return rt_occluded != 0u;
+}
+
+#endif // TP_SHADERS_TRACE_RTX_GLSL

@@ -1,0 +1,196 @@
+#include "vulkan_rt/render_loop.h"
+
+#include "util/error.h"
+#include "vulkan_rt/barriers.h"
+#include "vulkan_rt/batch_planner.h"
+#include "vulkan_rt/gpu_timer.h"
+
+#include <chrono>
+#include <cstring>
+
+namespace tp {
+namespace {
+
+// Wall time aimed at per submission: short against display watchdogs (2 s on Windows) and
+// --time-limit, long against the ~0.1 ms cost of a submit-and-wait round trip.
+constexpr double kTargetSubmitSeconds = 0.1;
+
+constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
+                                        VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                                        VK_BUFFER_USAGE_TRANSFER_DST_BIT;
+
+double seconds_since(std::chrono::steady_clock::time_point t0) {
+    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+}
+
+// The accumulators, counters and timer of one render, and the batches run through a Tracer.
+class BatchSession {
+  public:
+    BatchSession(const VulkanContext& ctx, const FlatScene& scene, const SceneBuffers& sb,
+                 Tracer& tracer)
+        : ctx_(ctx), tracer_(tracer), width_(scene.params.camera.width),
+          height_(scene.params.camera.height),
+          accum_(ctx, VkDeviceSize(width_) * height_ * sizeof(PixelAccum), kStorage, false),
+          counters_(ctx, kCounterBytes, kStorage, false),
+          host_counters_(ctx, kCounterBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true),
+          timer_(ctx) {
+        for (uint32_t slot = 0; slot < sb.slots.size(); ++slot) tracer.bind(slot, sb.slots[slot]);
+        tracer.bind(BINDING_ACCUM, accum_);
+        tracer.bind(BINDING_COUNTERS, counters_);
+        std::memset(host_counters_.mapped(), 0, kCounterBytes);
+        ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+            vkCmdFillBuffer(cmd, accum_.handle(), 0, VK_WHOLE_SIZE, 0);
+            vkCmdFillBuffer(cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
+        });
+        params_.env_table_size = uint32_t(scene.env_table.size());
+        params_.probe_iterations = LOOP_PROBE_ITERATIONS;
+    }
+
+    double gpu_seconds() const { return timer_.active() ? gpu_seconds_ : -1.0; }
+    uint32_t submissions() const { return submissions_; }
+    uint32_t repeats() const { return repeats_; }
+
+    // Traces the batch to completion. Dispatches are repeated while some pixels stopped early
+    // (accumulate.glsl, loop budget); each repetition resumes them where they stopped. Returns
+    // whether that happened.
+    bool run(const Batch& b) {
+        params_.sample_begin = b.sample_begin;
+        params_.sample_count = b.sample_count;
+        params_.row_begin = b.row_begin;
+        params_.row_end = b.row_end;
+        bool cut_short = false;
+        for (uint64_t camera = counter(COUNTER_CAMERA);; camera = counter(COUNTER_CAMERA)) {
+            launch();
+            if (counter(COUNTER_TRUNCATED) == 0) return cut_short;
+            if (counter(COUNTER_CAMERA) == camera)
+                runtime_error("the Vulkan device ends shader loops before one path is traced "
+                              "(lavapipe allows 65535 loop iterations per invocation); lower "
+                              "--max-depth");
+            cut_short = true;
+            ++repeats_;
+        }
+    }
+
+    // Merges every pixel into a double-precision film and fills the counters of `st`.
+    Film read_back(RenderStats& st) const {
+        const Buffer host(ctx_, accum_.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+        ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
+            record_shader_barrier(cmd, tracer_.shader_stage());
+            const VkBufferCopy region{0, 0, accum_.size()};
+            vkCmdCopyBuffer(cmd, accum_.handle(), host.handle(), 1, &region);
+            record_host_read_barrier(cmd);
+        });
+        const auto* pixels = static_cast<const PixelAccum*>(host.mapped());
+        Film film(width_, height_);
+        for (uint32_t p = 0; p < width_ * height_; ++p) {
+            film.add_batch(p, pixels[p].count, pixels[p].sum, pixels[p].sum_sq);
+            st.samples += pixels[p].count;
+        }
+        // The counters came back with the last launch.
+        st.rays.camera = counter(COUNTER_CAMERA);
+        st.rays.extension = counter(COUNTER_EXTENSION);
+        st.rays.shadow = counter(COUNTER_SHADOW);
+        st.nan_samples = counter(COUNTER_NAN);
+        return film;
+    }
+
+  private:
+    static constexpr VkDeviceSize kCounterBytes = COUNTER_WORDS * sizeof(uint32_t);
+
+    // One submission: clear the cut-short counter, launch the batch's rows, copy the counters
+    // back.
+    void launch() {
+        const VkPipelineStageFlags stage = tracer_.shader_stage();
+        ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
+            record_shader_barrier(cmd, stage); // the previous launch's accumulator writes
+            vkCmdFillBuffer(cmd, counters_.handle(), COUNTER_TRUNCATED * sizeof(uint32_t),
+                            2 * sizeof(uint32_t), 0);
+            record_shader_barrier(cmd, stage);
+            timer_.record_begin(cmd);
+            tracer_.record_launch(cmd, params_, width_);
+            timer_.record_end(cmd);
+            record_shader_barrier(cmd, stage);
+            const VkBufferCopy region{0, 0, kCounterBytes};
+            vkCmdCopyBuffer(cmd, counters_.handle(), host_counters_.handle(), 1, &region);
+            record_host_read_barrier(cmd);
+        });
+        gpu_seconds_ += timer_.read_seconds();
+        ++submissions_;
+    }
+
+    uint64_t counter(uint32_t slot) const {
+        const auto* words = static_cast<const uint32_t*>(host_counters_.mapped());
+        return uint64_t(words[slot]) | (uint64_t(words[slot + 1]) << 32);
+    }
+
+    const VulkanContext& ctx_;
+    Tracer& tracer_;
+    uint32_t width_, height_;
+    Buffer accum_, counters_, host_counters_;
+    GpuTimer timer_;
+    BatchParams params_{};
+    double gpu_seconds_ = 0;
+    uint32_t submissions_ = 0, repeats_ = 0;
+};
+
+} // namespace
+
+RenderParams seeded_params(const FlatScene& scene, uint32_t seed) {
+    RenderParams p = scene.params;
+    p.seed = seed;
+    return p;
+}
+
+RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
+                            const RenderOptions& options, const SceneBuffers& scene_buffers,
+                            Tracer& tracer, const AccelStats& accel) {
+    RenderResult result;
+    RenderStats& st = result.stats;
+    st.backend = "vulkan";
+    st.mode = tracer.mode();
+    st.device = ctx.info().name;
+    st.scene = scene.name;
+    st.seed = options.seed;
+    st.width = scene.params.camera.width;
+    st.height = scene.params.camera.height;
+    st.build_time_s = accel.build_time_s;
+    st.accel_bytes = accel.bytes;
+    for (const auto& [key, value] : accel.extra) st.extra[key] = value;
+
+    BatchSession session(ctx, scene, scene_buffers, tracer);
+    BatchPlanner planner(st.width, st.height, scene.spp, kTargetSubmitSeconds);
+    planner.stop_at(options.next_stop(0, scene.spp));
+    const auto t0 = std::chrono::steady_clock::now();
+    double snapshot_seconds = 0; // read-backs for checkpoints: not rendering time
+    while (!planner.done()) {
+        const Batch b = planner.next();
+        const auto t_batch = std::chrono::steady_clock::now();
+        const bool cut_short = session.run(b);
+        planner.completed(b, seconds_since(t_batch), cut_short);
+        if (options.progress) options.progress(planner.fraction_done());
+        if (planner.done() && options.on_checkpoint &&
+            options.is_checkpoint(planner.samples_done())) {
+            const auto t_snap = std::chrono::steady_clock::now();
+            RenderResult snapshot{Film(), st};
+            snapshot.stats.wall_time_s = seconds_since(t0) - snapshot_seconds;
+            snapshot.stats.gpu_time_s = session.gpu_seconds();
+            snapshot.stats.spp = planner.samples_done();
+            snapshot.film = session.read_back(snapshot.stats);
+            options.on_checkpoint(snapshot);
+            snapshot_seconds += seconds_since(t_snap);
+        }
+        planner.stop_at(options.next_stop(planner.samples_done(), scene.spp));
+        if (planner.at_pass_boundary() && options.time_limit_s > 0 &&
+            seconds_since(t0) >= options.time_limit_s)
+            break;
+    }
+    st.wall_time_s = seconds_since(t0) - snapshot_seconds;
+    st.gpu_time_s = session.gpu_seconds();
+    st.spp = planner.samples_done();
+    st.extra["submissions"] = std::to_string(session.submissions());
+    st.extra["repeated_submissions"] = std::to_string(session.repeats());
+    result.film = session.read_back(st);
+    return result;
+}
+
+} // namespace tp

@@ -1,0 +1,48 @@
+// The render loop both Vulkan modes share (compute_renderer.cpp, pipeline_renderer.cpp): the
+// per-pixel accumulators and ray counters, progressive batches (batch_planner.h) with
+// checkpoints and --time-limit, repeated dispatches after a cut-short one, the read-back into
+// the double-precision Film and the statistics. The modes differ only in their Tracer: the
+// pipeline that runs a batch and the acceleration structure it binds.
+#pragma once
+
+#include "render/render_options.h"
+#include "scene/flatten.h"
+#include "shaders/interface.h"
+#include "vulkan_rt/buffer.h"
+#include "vulkan_rt/context.h"
+#include "vulkan_rt/scene_buffers.h"
+
+#include <map>
+#include <string>
+
+namespace tp {
+
+class Tracer {
+  public:
+    virtual ~Tracer() = default;
+    virtual const char* mode() const = 0; // RenderStats::mode: "compute" or "pipeline"
+    // The stage of the shader that writes the accumulators (barriers).
+    virtual VkPipelineStageFlags shader_stage() const = 0;
+    // Points slot `binding` (interface.h: scene, accumulator and counter slots) at `buffer`.
+    virtual void bind(uint32_t binding, const Buffer& buffer) = 0;
+    // Records one invocation per pixel of rows [batch.row_begin, batch.row_end), all `width`
+    // columns, with `batch` as push constants.
+    virtual void record_launch(VkCommandBuffer cmd, const BatchParams& batch,
+                               uint32_t width) const = 0;
+};
+
+// What the mode built before rendering, for the statistics.
+struct AccelStats {
+    double build_time_s = 0;
+    uint64_t bytes = 0; // RenderStats::accel_bytes
+    std::map<std::string, std::string> extra;
+};
+
+// The scene's RenderParams with the render's seed (uploaded to BINDING_PARAMS).
+RenderParams seeded_params(const FlatScene& scene, uint32_t seed);
+
+RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
+                            const RenderOptions& options, const SceneBuffers& scene_buffers,
+                            Tracer& tracer, const AccelStats& accel);
+
+} // namespace tp

@@ -1,0 +1,172 @@
+#include "vulkan_rt/rt_program.h"
+
+#include "shaders/interface.h"
+#include "shaders/rt_interface.h"
+#include "vulkan_rt/sbt_layout.h"
+#include "vulkan_rt/vk_error.h"
+
+#include <vector>
+
+// Generated from shaders/*.rgen, *.rmiss, *.rchit (shaders/spirv.cmake).
+#include "closest_hit.spv.h"
+#include "miss.spv.h"
+#include "render_pipeline.spv.h"
+#include "shadow_miss.spv.h"
+
+namespace tp {
+namespace {
+
+// Interface slots 0..16 without BINDING_BVH_TRIS, with the TLAS in BINDING_TLAS. Only the
+// ray-generation shader reads them; the hit and miss shaders touch only their payloads.
+std::vector<BindingSlot> pipeline_slots() {
+    std::vector<BindingSlot> slots;
+    for (uint32_t b = 0; b < BINDING_COUNT; ++b) {
+        if (b == BINDING_BVH_TRIS) continue;
+        slots.push_back({b, b == BINDING_TLAS ? VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR
+                                              : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    }
+    return slots;
+}
+
+struct Stage {
+    VkShaderStageFlagBits stage;
+    const uint32_t* spirv;
+    size_t bytes;
+};
+
+// Shader stages, and groups, in the order of shaders/rt_interface.h.
+static_assert(RT_MISS_CLOSEST == 0 && RT_MISS_SHADOW == 1 && RT_MISS_COUNT == 2 &&
+                  RT_HIT_GROUP_COUNT == 1,
+              "the stages below follow rt_interface.h");
+const Stage kStages[] = {
+    {VK_SHADER_STAGE_RAYGEN_BIT_KHR, tp_spirv_render_pipeline, sizeof(tp_spirv_render_pipeline)},
+    {VK_SHADER_STAGE_MISS_BIT_KHR, tp_spirv_miss, sizeof(tp_spirv_miss)},
+    {VK_SHADER_STAGE_MISS_BIT_KHR, tp_spirv_shadow_miss, sizeof(tp_spirv_shadow_miss)},
+    {VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR, tp_spirv_closest_hit, sizeof(tp_spirv_closest_hit)},
+};
+constexpr uint32_t kGroupCount = 1 + RT_MISS_COUNT + RT_HIT_GROUP_COUNT;
+static_assert(sizeof(kStages) / sizeof(kStages[0]) == kGroupCount, "one shader per group");
+
+VkStridedDeviceAddressRegionKHR region(VkDeviceAddress table, const SbtRegion& r) {
+    return {table + r.offset, r.stride, r.size};
+}
+
+} // namespace
+
+RtProgram::RtProgram(const VulkanContext& ctx, const RtFunctions& rt, uint32_t push_bytes)
+    : ctx_(ctx), rt_(rt),
+      bindings_(ctx, pipeline_slots(), VK_SHADER_STAGE_RAYGEN_BIT_KHR, push_bytes) {
+    create_pipeline();
+    try {
+        create_binding_table();
+    } catch (...) {
+        vkDestroyPipeline(ctx.device(), pipeline_, nullptr);
+        throw;
+    }
+}
+
+RtProgram::~RtProgram() {
+    vkDestroyPipeline(ctx_.device(), pipeline_, nullptr);
+}
+
+void RtProgram::create_pipeline() {
+    const VkDevice device = ctx_.device();
+    std::vector<VkShaderModule> modules;
+    std::vector<VkPipelineShaderStageCreateInfo> stages;
+    std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups;
+    struct ModuleGuard {
+        VkDevice d;
+        std::vector<VkShaderModule>& m;
+        ~ModuleGuard() {
+            for (VkShaderModule x : m) vkDestroyShaderModule(d, x, nullptr);
+        }
+    } guard{device, modules};
+    for (uint32_t i = 0; i < kGroupCount; ++i) {
+        VkShaderModuleCreateInfo mi{};
+        mi.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
+        mi.codeSize = kStages[i].bytes;
+        mi.pCode = kStages[i].spirv;
+        VkShaderModule module = VK_NULL_HANDLE;
+        vk_check(vkCreateShaderModule(device, &mi, nullptr, &module), "loading a shader");
+        modules.push_back(module);
+
+        VkPipelineShaderStageCreateInfo st{};
+        st.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
+        st.stage = kStages[i].stage;
+        st.module = module;
+        st.pName = "main";
+        stages.push_back(st);
+
+        // Ray generation and miss shaders are "general" groups; the closest hit is a
+        // triangle hit group (no any-hit, no intersection shader: built-in triangles).
+        VkRayTracingShaderGroupCreateInfoKHR g{};
+        g.sType = VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR;
+        const bool hit = kStages[i].stage == VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR;
+        g.type = hit ? VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR
+                     : VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR;
+        g.generalShader = hit ? VK_SHADER_UNUSED_KHR : i;
+        g.closestHitShader = hit ? i : VK_SHADER_UNUSED_KHR;
+        g.anyHitShader = VK_SHADER_UNUSED_KHR;
+        g.intersectionShader = VK_SHADER_UNUSED_KHR;
+        groups.push_back(g);
+    }
+    VkRayTracingPipelineCreateInfoKHR ci{};
+    ci.sType = VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR;
+    ci.stageCount = uint32_t(stages.size());
+    ci.pStages = stages.data();
+    ci.groupCount = uint32_t(groups.size());
+    ci.pGroups = groups.data();
+    // Only the ray-generation shader traces rays; hit and miss shaders never do.
+    ci.maxPipelineRayRecursionDepth = 1;
+    ci.layout = bindings_.layout();
+    vk_check(rt_.vkCreateRayTracingPipelinesKHR(device, VK_NULL_HANDLE, VK_NULL_HANDLE, 1, &ci,
+                                                nullptr, &pipeline_),
+             "compiling the ray-tracing pipeline");
+}
+
+void RtProgram::create_binding_table() {
+    VkPhysicalDeviceRayTracingPipelinePropertiesKHR props{};
+    props.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_PROPERTIES_KHR;
+    VkPhysicalDeviceProperties2 p2{};
+    p2.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2;
+    p2.pNext = &props;
+    vkGetPhysicalDeviceProperties2(ctx_.physical(), &p2);
+    const SbtProperties sp{props.shaderGroupHandleSize, props.shaderGroupHandleAlignment,
+                           props.shaderGroupBaseAlignment, props.maxShaderGroupStride};
+    const SbtLayout layout = sbt_layout(sp, RT_MISS_COUNT, RT_HIT_GROUP_COUNT);
+
+    std::vector<uint8_t> handles(size_t(kGroupCount) * sp.handle_size);
+    vk_check(rt_.vkGetRayTracingShaderGroupHandlesKHR(ctx_.device(), pipeline_, 0, kGroupCount,
+                                                      handles.size(), handles.data()),
+             "reading shader group handles");
+    const std::vector<uint8_t> table = sbt_table(layout, handles);
+
+    // The table starts at the buffer's first multiple of the base alignment.
+    sbt_ = Buffer(ctx_, layout.bytes + sp.base_alignment - 1,
+                  VK_BUFFER_USAGE_SHADER_BINDING_TABLE_BIT_KHR |
+                      VK_BUFFER_USAGE_SHADER_DEVICE_ADDRESS_BIT | VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+                  false);
+    const VkDeviceAddress base = sbt_.device_address();
+    const uint64_t start = sbt_placement(base, sp.base_alignment);
+    Uploader up(ctx_);
+    up.add_to(sbt_, start, table.data(), table.size());
+    up.flush();
+    raygen_ = region(base + start, layout.raygen);
+    miss_ = region(base + start, layout.miss);
+    hit_ = region(base + start, layout.hit);
+}
+
+void RtProgram::bind_tlas(VkAccelerationStructureKHR tlas) {
+    bindings_.write_acceleration_structure(BINDING_TLAS, tlas);
+}
+
+void RtProgram::record_trace(VkCommandBuffer cmd, const void* push, uint32_t width,
+                             uint32_t height) const {
+    vkCmdBindPipeline(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, pipeline_);
+    bindings_.record_bind(cmd, VK_PIPELINE_BIND_POINT_RAY_TRACING_KHR, push);
+    // At most 16384 x 16384 = 2^28 invocations (the CLI's size limit), below every device's
+    // maxRayDispatchInvocationCount (at least 2^30).
+    rt_.vkCmdTraceRaysKHR(cmd, &raygen_, &miss_, &hit_, &callable_, width, height, 1);
+}
+
+} // namespace tp

@@ -1,0 +1,42 @@
+// Pipeline mode's ray-tracing pipeline: the ray-generation shader (shaders/render_pipeline.rgen,
+// the path loop), the two miss shaders and the closest-hit group of shaders/rt_interface.h; its
+// shader binding table (sbt_layout.h) in device memory; descriptor set 0 of interface.h with the
+// TLAS in slot 13; and the vkCmdTraceRaysKHR of a batch.
+#pragma once
+
+#include "vulkan_rt/buffer.h"
+#include "vulkan_rt/context.h"
+#include "vulkan_rt/pipeline_bindings.h"
+#include "vulkan_rt/rt_functions.h"
+
+namespace tp {
+
+class RtProgram {
+  public:
+    RtProgram(const VulkanContext& ctx, const RtFunctions& rt, uint32_t push_bytes);
+    ~RtProgram();
+    RtProgram(const RtProgram&) = delete;
+    RtProgram& operator=(const RtProgram&) = delete;
+
+    // Points storage-buffer slot `binding` at the whole of `buffer`.
+    void bind(uint32_t binding, const Buffer& buffer) { bindings_.write_buffer(binding, buffer); }
+    void bind_tlas(VkAccelerationStructureKHR tlas);
+
+    // Binds the pipeline and the set, pushes the constants and launches width x height
+    // ray-generation invocations.
+    void record_trace(VkCommandBuffer cmd, const void* push, uint32_t width,
+                      uint32_t height) const;
+
+  private:
+    void create_pipeline();
+    void create_binding_table();
+
+    const VulkanContext& ctx_;
+    const RtFunctions& rt_;
+    PipelineBindings bindings_;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
+    Buffer sbt_;
+    VkStridedDeviceAddressRegionKHR raygen_{}, miss_{}, hit_{}, callable_{};
+};
+
+} // namespace tp
