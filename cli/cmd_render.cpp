@@ -7,9 +7,12 @@
 #include "image/png_io.h"
 #include "scene/flatten.h"
 #include "scene/load.h"
+#include "util/error.h"
 #include "vulkan_rt/vulkan_renderer.h"
 
 #include <fmt/core.h>
+
+#include <unistd.h>
 
 #include <filesystem>
 #include <optional>
@@ -44,6 +47,23 @@ ExrImage render_image(const RenderResult& r) {
     return img;
 }
 
+// An output file can be written when its directory exists and is writable and the path is not
+// a directory or a read-only file. Checked for every output before rendering, so that a bad
+// path fails at once (exit 2) and leaves no file behind instead of failing after the render.
+void check_output_path(const std::string& path, const char* option) {
+    namespace fs = std::filesystem;
+    const fs::path p(path);
+    const fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
+    std::error_code ec;
+    if (!fs::is_directory(dir, ec))
+        input_error("{} {}: the directory {} does not exist", option, path, dir.string());
+    if (fs::is_directory(p, ec)) input_error("{} {}: is a directory", option, path);
+    if (access(dir.c_str(), W_OK) != 0)
+        input_error("{} {}: the directory {} is not writable", option, path, dir.string());
+    if (fs::exists(p, ec) && access(p.c_str(), W_OK) != 0)
+        input_error("{} {}: the file is not writable", option, path);
+}
+
 int run_render(const RenderArgs& a) {
     std::vector<std::string> warnings;
     Scene scene = load_scene(a.scene, warnings);
@@ -65,6 +85,9 @@ int run_render(const RenderArgs& a) {
 
     const std::string out =
         !a.output.empty() ? a.output : std::filesystem::path(scene.path).stem().string() + ".exr";
+    check_output_path(out, "-o");
+    if (!a.png.empty()) check_output_path(a.png, "--png");
+    if (!a.stats.empty()) check_output_path(a.stats, "--stats");
 
     ProgressBar bar(fmt::format("render {}", a.backend));
     RenderOptions opt;

@@ -463,3 +463,39 @@ TEST_CASE("impossible cameras are rejected with the file and field or flag", "[c
         {"--spp 0", {{"ok.json", ok}}, "ok.json", "--spp 0", {"--spp"}},
     });
 }
+
+TEST_CASE("an unwritable output path is rejected before rendering and nothing is written",
+          "[cli][bad-input]") {
+    // Every output is checked before the render starts: a --png or --stats path in a missing
+    // directory used to fail only after the render, leaving the EXR behind.
+    const fs::path dir = tp::test::temp_dir("bad-output");
+    std::ofstream(dir / "ok.json") << with_camera(kCamera);
+    const std::string exr = (dir / "out.exr").string(), png = (dir / "out.png").string(),
+                      json = (dir / "out.json").string(), missing = (dir / "no" / "x").string();
+    fs::create_directory(dir / "taken.png");
+    const struct {
+        const char* name;
+        std::string args, option;
+    } cases[] = {
+        {"-o in a missing directory", " -o " + shell_quote(missing + ".exr"), "-o"},
+        {"--png in a missing directory",
+         " -o " + shell_quote(exr) + " --png " + shell_quote(missing + ".png"), "--png"},
+        {"--stats in a missing directory",
+         " -o " + shell_quote(exr) + " --png " + shell_quote(png) + " --stats " +
+             shell_quote(missing + ".json"),
+         "--stats"},
+        {"--png naming a directory",
+         " -o " + shell_quote(exr) + " --png " + shell_quote((dir / "taken.png").string()),
+         "--png"},
+    };
+    for (const auto& c : cases) {
+        const auto r = run(tp::test::twinpath_bin() + " render " +
+                           shell_quote((dir / "ok.json").string()) + " --spp 1" + c.args);
+        INFO(c.name << "\n" << r.out);
+        CHECK(r.exit_code == 2);
+        CHECK(r.out.find(c.option + " ") != std::string::npos);
+        CHECK(r.out.find("internal error") == std::string::npos);
+        for (const std::string& f : {exr, png, json, exr + ".partial"}) CHECK_FALSE(fs::exists(f));
+    }
+    fs::remove_all(dir);
+}
