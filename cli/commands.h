@@ -16,5 +16,6 @@ struct Subcommand {
 Subcommand add_render_command(CLI::App& app);
 Subcommand add_compare_command(CLI::App& app);
 Subcommand add_info_command(CLI::App& app);
+Subcommand add_bench_command(CLI::App& app);
 
 } // namespace tp

@@ -1,0 +1,67 @@
+#include "bench/backends.h"
+
+#include "bench/host_info.h"
+#include "cpu_ref/cpu_renderer.h"
+#include "util/error.h"
+#include "vulkan_rt/vulkan_renderer.h"
+
+#include <fmt/format.h>
+
+#include <algorithm>
+
+namespace tp::bench {
+namespace {
+
+std::string cpu_device(uint32_t threads) {
+    const unsigned n = threads > 0 ? std::min<unsigned>(threads, cpu_cores()) : cpu_cores();
+    return fmt::format("{} ({} thread{}, Embree + TBB)", cpu_model(), n, n == 1 ? "" : "s");
+}
+
+} // namespace
+
+std::vector<Backend> expand_backends(const std::vector<std::string>& requested,
+                                     const std::string& device_selector, uint32_t cpu_threads,
+                                     std::vector<Skip>& skipped) {
+    std::vector<Backend> out;
+    const auto add = [&](const Backend& b) {
+        for (const Backend& o : out)
+            if (o.label() == b.label()) return;
+        out.push_back(b);
+    };
+    for (const std::string& r : requested) {
+        if (r == "cpu") {
+            add({"cpu", "embree", cpu_device(cpu_threads)});
+            continue;
+        }
+        const std::string mode = r == "vulkan" ? "" : r.rfind("vulkan:", 0) == 0 ? r.substr(7) : "-";
+        if (mode == "-" || (!mode.empty() && mode != "compute" && mode != "pipeline"))
+            input_error("--backends: unknown backend '{}' (expected cpu, vulkan, vulkan:compute "
+                        "or vulkan:pipeline)",
+                        r);
+        DeviceInfo device;
+        try {
+            device = select_device(list_vulkan_devices(), device_selector);
+        } catch (const RuntimeError& e) {
+            skipped.push_back({r, e.what()});
+            continue;
+        }
+        const std::string where = fmt::format("{} ({})", device.name, device.driver);
+        const std::vector<std::string> modes = device.modes();
+        for (const std::string& m : modes)
+            if (mode.empty() || m == mode) add({"vulkan", m, where});
+        if (!mode.empty() && std::find(modes.begin(), modes.end(), mode) == modes.end())
+            skipped.push_back({r, fmt::format("{} does not offer {} mode", device.name, mode)});
+    }
+    return out;
+}
+
+RenderResult render_on(const Backend& backend, const FlatScene& scene, const RenderOptions& options,
+                       const std::string& device_selector) {
+    if (backend.name == "cpu") return render_cpu(scene, options);
+    VulkanOptions vk;
+    vk.device = device_selector;
+    vk.mode = backend.mode;
+    return render_vulkan(scene, options, vk);
+}
+
+} // namespace tp::bench

@@ -1,0 +1,57 @@
+// What one `twinpath bench` run is asked to do: which sections, scenes and backends, at which
+// size and sample counts, and where its files go. cmd_bench.cpp fills it from the command line;
+// every section reads it and nothing else.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace tp::bench {
+
+// The seed of every cached reference. The measured renders use BenchOptions::seed, which must
+// differ: a reference that shares samples with the image it judges hides their error.
+constexpr uint32_t kReferenceSeed = 0x7e5f0001u;
+
+struct BenchOptions {
+    // Sections; when none is chosen the ladder runs.
+    bool ladder = false; // error against time for each backend and mode (issue 5)
+    bool table = false;  // rays/s and time over depth and spp (thesis Table 5.3)
+    bool peer = false;   // the same scenes in Embree's path tracer tutorial (issue 2)
+
+    std::vector<std::string> scenes;   // catalogue names (scenes.h) or .json/.obj files
+    std::vector<std::string> backends; // cpu, vulkan (every mode), vulkan:compute, ...
+    std::string device;                // Vulkan --device selector
+
+    uint32_t width = 256, height = 256;
+    std::optional<uint32_t> max_depth; // overrides the scene's
+    uint32_t max_spp = 64;             // ladder: 1, 2, 4, ... up to this
+    uint32_t ref_spp = 1024;           // reference
+    uint32_t seed = 1;
+    uint32_t threads = 0; // CPU renders other than the peer comparison; 0: all cores
+
+    // Table 5.3: depths at table_fixed_spp, then sample counts at table_fixed_depth. Russian
+    // roulette is off there (min depth = max depth), as in the thesis's fixed-depth runs.
+    std::vector<uint32_t> table_depths{1, 2, 3, 5, 10};
+    std::vector<uint32_t> table_spp{1, 10, 100, 1000};
+    uint32_t table_fixed_spp = 10, table_fixed_depth = 3;
+
+    // Peer comparison: time per sample from renders at 1 and peer_spp samples, for each
+    // thread count; path length = the scene's max depth (or max_depth).
+    uint32_t peer_spp = 16;
+    std::vector<uint32_t> peer_threads{1, 2};
+    std::string peer_binary = "/usr/bin/pathtracer";
+
+    std::string out_dir = "out/bench";
+    std::string cache_dir;  // empty: $TWINPATH_CACHE, $XDG_CACHE_HOME/twinpath, ~/.cache/twinpath
+    std::string assets_dir; // empty: $TWINPATH_ASSETS, else ../shared/assets of the source tree
+    std::string section;    // id of this run's section in the markdown file
+    std::string markdown;   // merge the section into this file (BENCHMARKS.md)
+    std::vector<std::string> from_json; // only render these results into `markdown`
+    bool quick = false;                 // CI smoke size
+
+    std::string command; // the command line, recorded with every number
+};
+
+} // namespace tp::bench

@@ -1,0 +1,119 @@
+#include "bench/peer.h"
+
+#include "bench/peer_scene.h"
+#include "bench/process.h"
+#include "cpu_ref/cpu_renderer.h"
+
+#include <algorithm>
+#include <filesystem>
+#include <limits>
+
+namespace fs = std::filesystem;
+
+namespace tp::bench {
+namespace {
+
+constexpr double kNever = std::numeric_limits<double>::infinity();
+
+double per_spp(double low, double high, uint32_t spp) {
+    return (high - low) / double(spp - 1);
+}
+
+} // namespace
+
+PeerRun run_peer(const FlatScene& scene, const BenchOptions& options, const std::string& work_dir,
+                 const std::function<void(double)>& progress) {
+    PeerRun run;
+    run.spp = options.peer_spp;
+    fs::create_directories(work_dir);
+    run.obj = (fs::path(work_dir) / (fs::path(scene.name).stem().string() + ".obj")).string();
+    write_obj(scene, run.obj);
+    const std::string log = (fs::path(work_dir) / "pathtracer.log").string();
+    fs::remove(log);
+
+    const std::vector<std::string> scene_args = peer_scene_arguments(scene);
+    const auto peer_args = [&](uint32_t spp, uint32_t threads) {
+        std::vector<std::string> a = {"-i", run.obj, "-o",
+                                      (fs::path(work_dir) / "peer.ppm").string(),
+                                      "--spp", std::to_string(spp), "--max-path-length",
+                                      std::to_string(scene.params.max_depth), "--threads",
+                                      std::to_string(threads)};
+        a.insert(a.end(), scene_args.begin(), scene_args.end());
+        return a;
+    };
+    run.peer_arguments = peer_args(run.spp, options.peer_threads.front());
+
+    const double steps = double(options.peer_threads.size() * kPeerRepeats * 3);
+    double step = 0;
+    const auto advance = [&] {
+        if (progress) progress(++step / steps);
+    };
+    for (uint32_t threads : options.peer_threads) {
+        PeerRow row;
+        row.threads = threads;
+        row.ours_low_s = row.ours_high_s = row.peer_low_s = row.peer_high_s = kNever;
+        for (int rep = 0; rep < kPeerRepeats; ++rep) {
+            FlatScene s = scene;
+            s.spp = run.spp;
+            RenderOptions opt;
+            opt.seed = options.seed;
+            opt.threads = threads;
+            opt.checkpoints = {1, run.spp};
+            double low = 0;
+            opt.on_checkpoint = [&](const RenderResult& snap) {
+                if (snap.stats.spp == 1) low = snap.stats.wall_time_s;
+            };
+            const RenderResult r = render_cpu(s, opt);
+            if (r.stats.wall_time_s - low < row.ours_high_s - row.ours_low_s) {
+                row.ours_low_s = low;
+                row.ours_high_s = r.stats.wall_time_s;
+            }
+            row.ours_rays_per_spp = double(r.stats.rays.total()) / double(r.stats.spp);
+            advance();
+            for (uint32_t spp : {1u, run.spp}) {
+                std::vector<std::string> argv = {options.peer_binary};
+                const std::vector<std::string> a = peer_args(spp, threads);
+                argv.insert(argv.end(), a.begin(), a.end());
+                const ProcessRun p = run_process(argv, log);
+                if (p.exit_code != 0) row.peer_exit = p.exit_code;
+                double& best = spp == 1 ? row.peer_low_s : row.peer_high_s;
+                best = std::min(best, p.wall_s);
+                advance();
+            }
+        }
+        run.rows.push_back(row);
+    }
+    return run;
+}
+
+nlohmann::json peer_json(const PeerRun& run) {
+    nlohmann::json rows = nlohmann::json::array();
+    for (const PeerRow& r : run.rows) {
+        const double ours = per_spp(r.ours_low_s, r.ours_high_s, run.spp);
+        const double peer = per_spp(r.peer_low_s, r.peer_high_s, run.spp);
+        const bool ok = r.peer_exit == 0 && peer > 0 && ours > 0;
+        rows.push_back(
+            {{"threads", r.threads},
+             {"ours",
+              {{"t_1spp_s", r.ours_low_s},
+               {"t_nspp_s", r.ours_high_s},
+               {"time_per_spp_s", ours},
+               {"rays_per_spp", r.ours_rays_per_spp},
+               {"mrays_per_s", 1e-6 * r.ours_rays_per_spp / ours}}},
+             {"peer",
+              {{"exit_code", r.peer_exit},
+               {"t_1spp_s", r.peer_low_s},
+               {"t_nspp_s", r.peer_high_s},
+               {"time_per_spp_s", ok ? nlohmann::json(peer) : nlohmann::json(nullptr)},
+               {"mrays_per_s_inferred",
+                ok ? nlohmann::json(1e-6 * r.ours_rays_per_spp / peer)
+                   : nlohmann::json(nullptr)}}},
+             {"speedup", ok ? nlohmann::json(peer / ours) : nlohmann::json(nullptr)}});
+    }
+    return {{"spp", run.spp},
+            {"obj", run.obj},
+            {"peer_arguments", run.peer_arguments},
+            {"rows", rows}};
+}
+
+} // namespace tp::bench

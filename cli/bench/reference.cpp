@@ -1,0 +1,73 @@
+#include "bench/reference.h"
+
+#include "bench/options.h"
+#include "bench/scene_hash.h"
+#include "cpu_ref/cpu_renderer.h"
+#include "image/exr_io.h"
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <filesystem>
+
+namespace fs = std::filesystem;
+
+namespace tp::bench {
+namespace {
+
+constexpr const char* kKeyAttribute = "twinpath:bench_key";
+
+} // namespace
+
+std::string resolve_cache_dir(const std::string& option) {
+    if (!option.empty()) return option;
+    if (const char* env = std::getenv("TWINPATH_CACHE")) return env;
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME")) return (fs::path(xdg) / "twinpath").string();
+    if (const char* home = std::getenv("HOME")) return (fs::path(home) / ".cache/twinpath").string();
+    return ".cache/twinpath";
+}
+
+Reference reference_for(const FlatScene& scene, const std::string& name, uint32_t spp,
+                        const std::string& cache_dir, const std::function<void(double)>& progress) {
+    FlatScene s = scene;
+    s.spp = spp;
+    s.params.seed = kReferenceSeed; // what render_cpu sets from RenderOptions::seed
+    Reference ref;
+    ref.key = fmt::format("{:016x}-{}", hash_flat_scene(s), renderer_version());
+    ref.spp = spp;
+    const fs::path dir = fs::path(cache_dir) / "references";
+    ref.file = (dir / fmt::format("{}-{}.exr", fs::path(name).stem().string(), ref.key)).string();
+
+    if (fs::exists(ref.file)) {
+        const ExrImage img = read_exr(ref.file);
+        const auto key = img.strings.find(kKeyAttribute);
+        if (key != img.strings.end() && key->second == ref.key) {
+            ref.image = rgb_image_from_exr(img, ref.file);
+            ref.cached = true;
+            ref.render_s = img.reals.count("twinpath:render_time_s")
+                               ? img.reals.at("twinpath:render_time_s")
+                               : 0.0;
+            return ref;
+        }
+    }
+
+    RenderOptions opt;
+    opt.seed = kReferenceSeed;
+    opt.progress = progress;
+    const RenderResult r = render_cpu(s, opt);
+    ExrImage img = r.film.to_exr();
+    img.strings[kKeyAttribute] = ref.key;
+    img.strings["twinpath:backend"] = "cpu/embree";
+    img.strings["twinpath:device"] = r.stats.device;
+    img.strings["twinpath:scene"] = name;
+    img.integers["twinpath:spp"] = r.stats.spp;
+    img.integers["twinpath:seed"] = r.stats.seed;
+    img.reals["twinpath:render_time_s"] = r.stats.wall_time_s;
+    fs::create_directories(dir);
+    write_exr(ref.file, img);
+    ref.image = rgb_image_from_exr(img, ref.file);
+    ref.render_s = r.stats.wall_time_s;
+    return ref;
+}
+
+} // namespace tp::bench

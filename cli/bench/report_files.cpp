@@ -1,0 +1,131 @@
+#include "bench/report_files.h"
+
+#include "bench/svg_plot.h"
+#include "compare/text_file.h"
+
+#include <fmt/format.h>
+
+#include <filesystem>
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace tp::bench {
+namespace {
+
+// One CSV field: numbers as they are, null empty, strings quoted when they need it (RFC 4180).
+std::string field(const json& v) {
+    if (v.is_null()) return "";
+    if (v.is_number_float()) return fmt::format("{:.6g}", v.get<double>());
+    if (v.is_number()) return v.dump();
+    const std::string s = v.is_string() ? v.get<std::string>() : v.dump();
+    if (s.find_first_of(",\"\n") == std::string::npos) return s;
+    std::string q = "\"";
+    for (char c : s) q += c == '"' ? std::string("\"\"") : std::string(1, c);
+    return q + "\"";
+}
+
+std::string row(std::initializer_list<json> fields) {
+    std::string line;
+    for (const json& f : fields) line += (line.empty() ? "" : ",") + field(f);
+    return line + "\n";
+}
+
+// Rays of a kind per second, in millions; null without time.
+json mrays(const json& rays, const char* kind, double seconds) {
+    if (!(seconds > 0)) return nullptr;
+    const double n = kind ? rays[kind].get<double>()
+                          : rays["camera"].get<double>() + rays["extension"].get<double>() +
+                                rays["shadow"].get<double>();
+    return 1e-6 * n / seconds;
+}
+
+std::string ladder_csv(const json& result) {
+    std::string csv = "scene,backend,mode,device,spp,wall_s,gpu_s,relmse,relmse_excess,mape,"
+                      "efficiency,camera_rays,extension_rays,shadow_rays,camera_mrays_s,"
+                      "extension_mrays_s,shadow_mrays_s,mrays_s\n";
+    for (const json& sc : result["scenes"])
+        for (const json& run : sc.value("ladder", json::array()))
+            for (const json& p : run["points"]) {
+                const double t = p["wall_s"];
+                csv += row({sc["name"], run["backend"], run["mode"], run["device"], p["spp"], t,
+                            p["gpu_s"], p["relmse"], p["relmse_excess"], p["mape"],
+                            p["efficiency"], p["rays"]["camera"], p["rays"]["extension"],
+                            p["rays"]["shadow"], mrays(p["rays"], "camera", t),
+                            mrays(p["rays"], "extension", t), mrays(p["rays"], "shadow", t),
+                            mrays(p["rays"], nullptr, t)});
+            }
+    return csv;
+}
+
+std::string table_csv(const json& result) {
+    std::string csv = "scene,backend,mode,device,accel_bytes,sweep,depth,spp,wall_s,gpu_s,"
+                      "camera_rays,extension_rays,shadow_rays,mrays_s,secondary_rays_per_sample\n";
+    for (const json& sc : result["scenes"])
+        for (const json& run : sc.value("table", json::array()))
+            for (const char* sweep : {"depth_rows", "spp_rows"})
+                for (const json& r : run[sweep]) {
+                    const double t = r["wall_s"], samples = r["samples"];
+                    const double secondary = r["rays"]["extension"].get<double>() +
+                                             r["rays"]["shadow"].get<double>();
+                    csv += row({sc["name"], run["backend"], run["mode"], run["device"],
+                                run["accel_bytes"], sweep == std::string("depth_rows") ? "depth" : "spp",
+                                r["depth"], r["spp"], t, r["gpu_s"], r["rays"]["camera"],
+                                r["rays"]["extension"], r["rays"]["shadow"],
+                                mrays(r["rays"], nullptr, t),
+                                samples > 0 ? json(secondary / samples) : json(nullptr)});
+                }
+    return csv;
+}
+
+std::string peer_csv(const json& result) {
+    std::string csv = "scene,width,height,spp,max_depth,threads,ours_time_per_spp_s,"
+                      "ours_mrays_s,peer_time_per_spp_s,peer_mrays_s_inferred,speedup\n";
+    for (const json& sc : result["scenes"]) {
+        if (!sc.contains("peer")) continue;
+        const json& peer = sc["peer"];
+        for (const json& r : peer["rows"])
+            csv += row({sc["name"], sc["width"], sc["height"], peer["spp"], sc["max_depth"],
+                        r["threads"], r["ours"]["time_per_spp_s"], r["ours"]["mrays_per_s"],
+                        r["peer"]["time_per_spp_s"], r["peer"]["mrays_per_s_inferred"],
+                        r["speedup"]});
+    }
+    return csv;
+}
+
+} // namespace
+
+void write_csv_files(const json& result, const std::string& dir) {
+    const json& sections = result["sections"];
+    const auto has = [&](const char* s) {
+        return std::find(sections.begin(), sections.end(), s) != sections.end();
+    };
+    if (has("ladder")) write_text_file((fs::path(dir) / "ladder.csv").string(), ladder_csv(result));
+    if (has("table")) write_text_file((fs::path(dir) / "table.csv").string(), table_csv(result));
+    if (has("peer")) write_text_file((fs::path(dir) / "peer.csv").string(), peer_csv(result));
+}
+
+void write_plots(json& result, const std::string& dir) {
+    for (json& sc : result["scenes"]) {
+        if (!sc.contains("ladder") || sc["ladder"].empty()) continue;
+        LogLogPlot plot;
+        plot.title = fmt::format("{}: relMSE against time ({}x{})", sc["name"].get<std::string>(),
+                                 sc["width"].get<int>(), sc["height"].get<int>());
+        plot.x_label = "wall time [s]";
+        plot.y_label = "relMSE (excess over reference noise)";
+        plot.guides = {1e-2, 1e-3};
+        for (const json& run : sc["ladder"]) {
+            PlotSeries s;
+            s.label = run["backend"].get<std::string>() + "/" + run["mode"].get<std::string>();
+            for (const json& p : run["points"])
+                s.points.emplace_back(p["wall_s"].get<double>(), p["relmse_excess"].get<double>());
+            plot.series.push_back(s);
+        }
+        const std::string rel = "plots/" + sc["name"].get<std::string>() + ".svg";
+        fs::create_directories(fs::path(dir) / "plots");
+        write_text_file((fs::path(dir) / rel).string(), svg_loglog(plot));
+        sc["plot"] = rel;
+    }
+}
+
+} // namespace tp::bench

@@ -1,0 +1,22 @@
+// Identity of a rendered image's inputs, for the reference cache: a hash of the flattened
+// scene (every array both engines render from, the camera, film size, depths, spp and seed)
+// and the renderer version (project version + the hash of the integrator sources,
+// cli/bench/renderer_version.cmake).
+#pragma once
+
+#include "scene/flatten.h"
+
+#include <cstdint>
+#include <string>
+
+namespace tp::bench {
+
+// 64-bit FNV-1a (Fowler, Noll & Vo) over the scene's arrays, each preceded by its length.
+// The shared structs have no implicit padding (shared/types.h pins their layout), so their
+// bytes are their values. Names are left out: they do not change the image.
+uint64_t hash_flat_scene(const FlatScene& scene);
+
+// "0.1.0+<16 hex digits>".
+std::string renderer_version();
+
+} // namespace tp::bench

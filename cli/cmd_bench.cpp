@@ -1,0 +1,410 @@
+// twinpath bench: the project's performance truth (issue 5). For each scene and each backend
+// and mode it measures, in sections chosen on the command line:
+//   --ladder  error against time: relMSE/MAPE against a cached CPU reference at 1, 2, 4, ...
+//             spp, efficiency, rays/s by kind, time to reach relMSE 1e-2 and 1e-3 (default);
+//   --table   rays/s and time over depth and spp (the seed thesis's Table 5.3);
+//   --peer    time per spp next to Embree's path tracer tutorial, at 1 and 2 threads (issue 2).
+// Everything measured goes into one JSON result (bench.json); the CSV files, the SVG plots
+// and the markdown section are generated from it, so a result brought back from another
+// machine renders the same way (--from-json). A new section is a flag, a function that fills
+// its part of each scene's JSON, and its rendering in bench/markdown.cpp.
+#include "commands.h"
+#include "progress.h"
+
+#include "bench/backends.h"
+#include "bench/host_info.h"
+#include "bench/ladder.h"
+#include "bench/markdown.h"
+#include "bench/options.h"
+#include "bench/peer.h"
+#include "bench/peer_scene.h"
+#include "bench/reference.h"
+#include "bench/report_files.h"
+#include "bench/scene_hash.h"
+#include "bench/scenes.h"
+#include "bench/sweep.h"
+#include "compare/text_file.h"
+#include "scene/flatten.h"
+#include "util/error.h"
+
+#include <fmt/core.h>
+#include <nlohmann/json.hpp>
+
+#include <algorithm>
+#include <chrono>
+#include <filesystem>
+#include <fstream>
+
+namespace fs = std::filesystem;
+using nlohmann::json;
+
+namespace tp {
+namespace {
+
+using namespace bench;
+
+// The state of one benchmark run: options, where things are, what ran and what did not.
+struct BenchRun {
+    BenchOptions o;
+    std::string cache_dir, assets_dir;
+    std::vector<Backend> backends;
+    std::vector<Skip> skipped;
+    bool failed = false; // a render failed at run time: exit code 3 once the files are written
+    int step = 0, steps = 0;
+
+    // "[bench 3/12] bunny vulkan/compute ladder" for the progress bar of the next step.
+    std::string next_label(const std::string& what) {
+        return fmt::format("[bench {}/{}] {}", ++step, steps, what);
+    }
+};
+
+void validate(const BenchOptions& o) {
+    if (o.max_spp < 2) input_error("--max-spp: the ladder needs at least 2 spp, got {}", o.max_spp);
+    if (o.ref_spp < o.max_spp)
+        input_error("--ref-spp ({}) must be at least --max-spp ({}): the reference must be less "
+                    "noisy than what it judges",
+                    o.ref_spp, o.max_spp);
+    if (o.seed == kReferenceSeed)
+        input_error("--seed {} is the references' seed; choose another so that the measured "
+                    "renders are independent of their reference",
+                    o.seed);
+    if (o.table_depths.empty() || o.table_spp.empty())
+        input_error("--table-depths and --table-spp must not be empty");
+    for (uint32_t v : o.table_depths)
+        if (v < 1) input_error("--table-depths: depths start at 1, got {}", v);
+    for (uint32_t v : o.table_spp)
+        if (v < 1) input_error("--table-spp: sample counts start at 1, got {}", v);
+    if (o.peer_spp < 2) input_error("--peer-spp must be at least 2, got {}", o.peer_spp);
+    if (o.peer_threads.empty()) input_error("--peer-threads must not be empty");
+    if (o.scenes.empty()) input_error("--scenes must not be empty");
+}
+
+json lights_json(const FlatScene& f) {
+    int point = 0, directional = 0, triangles = 0;
+    for (const Light& l : f.lights) {
+        point += l.type == LIGHT_POINT;
+        directional += l.type == LIGHT_DIRECTIONAL;
+        triangles += l.type == LIGHT_TRIANGLE;
+    }
+    const std::string env = f.params.env_light == NO_INDEX           ? "none"
+                            : f.params.env_texture == NO_TEXTURE ? "constant"
+                                                                   : "map";
+    return {{"point", point},
+            {"directional", directional},
+            {"emissive_triangles", triangles},
+            {"environment", env}};
+}
+
+FlatScene flatten_for_bench(Scene scene, const BenchOptions& o) {
+    SceneOverrides ov;
+    ov.width = o.width;
+    ov.height = o.height;
+    ov.max_depth = o.max_depth;
+    apply_overrides(scene, ov);
+    return flatten(scene);
+}
+
+// Runs `f` for one backend; a run-time failure (device lost, out of memory) is recorded and
+// the benchmark goes on with the next backend.
+template <typename F>
+void guarded(BenchRun& run, const std::string& what, F&& f) {
+    try {
+        f();
+    } catch (const RuntimeError& e) {
+        run.skipped.push_back({what, e.what()});
+        run.failed = true;
+        fmt::print(stderr, "twinpath: bench: {} failed: {}\n", what, e.what());
+    }
+}
+
+void ladder(BenchRun& run, const std::string& name, const FlatScene& flat, json& sj) {
+    ProgressBar ref_bar(run.next_label(fmt::format("{} reference ({} spp)", name, run.o.ref_spp)));
+    const Reference ref = reference_for(flat, name, run.o.ref_spp, run.cache_dir, ref_bar.callback());
+    sj["reference"] = {{"spp", ref.spp},    {"seed", kReferenceSeed}, {"file", ref.file},
+                       {"key", ref.key},    {"cached", ref.cached},   {"render_s", ref.render_s}};
+    sj["ladder"] = json::array();
+    for (const Backend& b : run.backends) {
+        const std::string what = fmt::format("{} {} ladder", name, b.label());
+        guarded(run, what, [&] {
+            ProgressBar bar(run.next_label(what));
+            const LadderRun lr = run_ladder(flat, b, ref, run.o, bar.callback());
+            sj["ladder"].push_back(ladder_json(lr));
+            const LadderPoint& p = lr.points.back();
+            fmt::print("bench: {}: {} spp in {:.3g} s, relMSE {:.3g}\n", what, p.spp, p.wall_s,
+                       p.excess);
+        });
+    }
+}
+
+void table(BenchRun& run, const std::string& name, const FlatScene& flat, json& sj) {
+    sj["table"] = json::array();
+    for (const Backend& b : run.backends) {
+        const std::string what = fmt::format("{} {} table", name, b.label());
+        guarded(run, what, [&] {
+            ProgressBar bar(run.next_label(what));
+            sj["table"].push_back(sweep_json(run_sweep(flat, b, run.o, bar.callback())));
+            fmt::print("bench: {}: done\n", what);
+        });
+    }
+}
+
+void peer(BenchRun& run, const std::string& name, Scene scene, json& sj) {
+    const std::string what = fmt::format("{} peer", name);
+    std::string reason;
+    const std::vector<std::string> changes = make_peer_variant(scene, reason);
+    if (!fs::exists(run.o.peer_binary))
+        reason = fmt::format("Embree's path tracer tutorial is not at {} (Debian package "
+                             "embree-tools; --peer-binary PATH)",
+                             run.o.peer_binary);
+    ProgressBar bar(run.next_label(what));
+    if (!reason.empty()) {
+        run.skipped.push_back({what, reason});
+        return;
+    }
+    SceneOverrides ov;
+    ov.width = run.o.width;
+    ov.height = run.o.height;
+    ov.max_depth = run.o.max_depth;
+    apply_overrides(scene, ov);
+    scene.settings.min_depth = scene.settings.max_depth; // Russian roulette off (peer.h)
+    FlatScene flat = flatten(scene);
+    flat.name = name;
+    const PeerRun pr = run_peer(flat, run.o, (fs::path(run.cache_dir) / "peer" / name).string(),
+                                bar.callback());
+    sj["peer"] = peer_json(pr);
+    sj["peer_variant"] = changes;
+    fmt::print("bench: {}: done\n", what);
+}
+
+json result_header(const BenchRun& run) {
+    const BenchOptions& o = run.o;
+    json sections = json::array();
+    std::string names;
+    for (const auto& [on, name] : {std::pair{o.ladder, "ladder"}, {o.table, "table"}, {o.peer, "peer"}})
+        if (on) {
+            sections.push_back(name);
+            names += (names.empty() ? "" : ", ") + std::string(name);
+        }
+    json backends = json::array();
+    std::string labels;
+    for (const Backend& b : run.backends) {
+        backends.push_back({{"backend", b.name}, {"mode", b.mode}, {"device", b.device}});
+        labels += (labels.empty() ? "" : ", ") + b.label();
+    }
+    json r;
+    r["schema"] = "twinpath-bench/1";
+    r["section"] = o.section;
+    r["title"] = fmt::format("`{}`: {} on {}", o.section, names,
+                             labels.empty() ? "the CPU" : labels);
+    r["command"] = o.command;
+    r["twinpath_version"] = TWINPATH_VERSION;
+    r["renderer_version"] = renderer_version();
+    r["started"] = utc_timestamp();
+    r["host"] = {{"cpu", cpu_model()}, {"cores", cpu_cores()}, {"load_average_start", load_average()}};
+    r["sections"] = sections;
+    r["backends"] = backends;
+    r["settings"] = {
+        {"width", o.width},
+        {"height", o.height},
+        {"max_depth", o.max_depth ? json(*o.max_depth) : json(nullptr)},
+        {"max_spp", o.max_spp},
+        {"ref_spp", o.ref_spp},
+        {"seed", o.seed},
+        {"threads", o.threads},
+        {"table",
+         {{"depths", o.table_depths},
+          {"spp", o.table_spp},
+          {"fixed_spp", o.table_fixed_spp},
+          {"fixed_depth", o.table_fixed_depth}}},
+        {"peer", {{"spp", o.peer_spp}, {"threads", o.peer_threads}, {"binary", o.peer_binary}}},
+        {"assets", run.assets_dir},
+        {"cache", run.cache_dir}};
+    return r;
+}
+
+void write_outputs(json& r, const BenchOptions& o) {
+    fs::create_directories(o.out_dir);
+    write_plots(r, o.out_dir);
+    write_csv_files(r, o.out_dir);
+    write_text_file((fs::path(o.out_dir) / "bench.json").string(), r.dump(2) + "\n");
+    write_text_file((fs::path(o.out_dir) / "bench.md").string(), markdown_section(r, "."));
+    if (!o.markdown.empty()) {
+        const fs::path md_dir = fs::absolute(o.markdown).parent_path();
+        merge_markdown_section(o.markdown, o.section,
+                               markdown_section(r, fs::relative(fs::absolute(o.out_dir), md_dir)
+                                                       .generic_string()));
+    }
+    fmt::print("bench: wrote {}/bench.json, bench.md, CSV and plots{}\n", o.out_dir,
+               o.markdown.empty() ? "" : ", section '" + o.section + "' of " + o.markdown);
+}
+
+int run_bench(BenchRun& run) {
+    BenchOptions& o = run.o;
+    if (!o.ladder && !o.table && !o.peer) o.ladder = true;
+    validate(o);
+    std::sort(o.table_spp.begin(), o.table_spp.end());
+    o.table_spp.erase(std::unique(o.table_spp.begin(), o.table_spp.end()), o.table_spp.end());
+    run.cache_dir = resolve_cache_dir(o.cache_dir);
+    run.assets_dir = resolve_assets_dir(o.assets_dir);
+    if (o.ladder || o.table) run.backends = expand_backends(o.backends, o.device, o.threads, run.skipped);
+    json r = result_header(run);
+    const auto t0 = std::chrono::steady_clock::now();
+
+    std::vector<std::pair<std::string, Scene>> scenes;
+    for (const std::string& name : o.scenes) {
+        std::string reason;
+        std::optional<Scene> s = load_bench_scene(name, run.assets_dir,
+                                                  (fs::path(run.cache_dir) / "scenes").string(), reason);
+        if (!s) {
+            fmt::print(stderr, "twinpath: bench: skipping: {}\n", reason);
+            run.skipped.push_back({name, reason});
+            continue;
+        }
+        scenes.emplace_back(fs::path(name).stem().string(), std::move(*s));
+    }
+    const int per_scene = (o.ladder ? 1 + int(run.backends.size()) : 0) +
+                          (o.table ? int(run.backends.size()) : 0) + (o.peer ? 1 : 0);
+    run.steps = per_scene * int(scenes.size());
+
+    r["scenes"] = json::array();
+    for (const auto& [name, scene] : scenes) {
+        FlatScene flat = flatten_for_bench(scene, o);
+        flat.name = name;
+        json sj = {{"name", name},
+                   {"source", scene.path},
+                   {"width", flat.params.camera.width},
+                   {"height", flat.params.camera.height},
+                   {"max_depth", flat.params.max_depth},
+                   {"min_depth", flat.params.min_depth},
+                   {"triangles", flat.instanced_triangles},
+                   {"unique_triangles", flat.unique_triangles},
+                   {"lights", lights_json(flat)}};
+        if (o.ladder) ladder(run, name, flat, sj);
+        if (o.table) table(run, name, flat, sj);
+        if (o.peer) peer(run, name, scene, sj);
+        r["scenes"].push_back(sj);
+    }
+
+    r["skipped"] = json::array();
+    for (const Skip& s : run.skipped) r["skipped"].push_back({{"what", s.what}, {"reason", s.reason}});
+    r["host"]["load_average_end"] = load_average();
+    r["elapsed_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    write_outputs(r, o);
+    return run.failed ? 3 : 0;
+}
+
+// --from-json: results of earlier runs (this machine's or another's) into the markdown file.
+int merge_only(const BenchOptions& o) {
+    if (o.markdown.empty()) input_error("--from-json needs --markdown FILE to merge into");
+    const fs::path md_dir = fs::absolute(o.markdown).parent_path();
+    for (const std::string& path : o.from_json) {
+        std::ifstream in(path);
+        if (!in) input_error("{}: cannot open file", path);
+        json r;
+        try {
+            r = json::parse(in);
+        } catch (const json::exception& e) {
+            input_error("{}: not a JSON file: {}", path, e.what());
+        }
+        if (r.value("schema", "") != "twinpath-bench/1")
+            input_error("{}: not a twinpath bench result (schema twinpath-bench/1)", path);
+        const std::string base =
+            fs::relative(fs::absolute(path).parent_path(), md_dir).generic_string();
+        merge_markdown_section(o.markdown, r["section"].get<std::string>(), markdown_section(r, base));
+        fmt::print("bench: section '{}' of {} from {}\n", r["section"].get<std::string>(),
+                   o.markdown, path);
+    }
+    return 0;
+}
+
+// --quick: a CI smoke size, for each setting the user did not give.
+void apply_quick(BenchOptions& o, const CLI::App& c) {
+    const auto unset = [&](const char* opt) { return c.count(opt) == 0; };
+    if (unset("--width")) o.width = 24;
+    if (unset("--height")) o.height = 24;
+    if (unset("--max-spp")) o.max_spp = 4;
+    if (unset("--ref-spp")) o.ref_spp = 32;
+    if (unset("--scenes")) o.scenes = {"cornell"};
+    if (unset("--table-depths")) o.table_depths = {1, 2};
+    if (unset("--table-spp")) o.table_spp = {1, 4};
+    if (unset("--table-fixed-spp")) o.table_fixed_spp = 2;
+    if (unset("--table-fixed-depth")) o.table_fixed_depth = 2;
+    if (unset("--peer-spp")) o.peer_spp = 2;
+}
+
+} // namespace
+
+Subcommand add_bench_command(CLI::App& app) {
+    auto run = std::make_shared<BenchRun>();
+    BenchOptions& o = run->o;
+    o.scenes.clear();
+    for (const CatalogueEntry& e : scene_catalogue()) o.scenes.push_back(e.name);
+    o.backends = {"cpu", "vulkan"};
+    o.section = "local";
+    CLI::App* c = app.add_subcommand("bench", "Benchmark run time against error (BENCHMARKS.md)");
+    c->add_flag("--ladder", o.ladder, "Error against time for each backend/mode (the default)");
+    c->add_flag("--table", o.table, "Rays/s and time over depth and spp (thesis Table 5.3)");
+    c->add_flag("--peer", o.peer, "Time per spp next to Embree's path tracer tutorial");
+    c->add_option("--scenes", o.scenes, "Scenes: " + catalogue_names() + ", or .json/.obj files")
+        ->delimiter(',')
+        ->capture_default_str();
+    c->add_option("--backends", o.backends,
+                  "cpu, vulkan (every mode of the device), vulkan:compute, vulkan:pipeline")
+        ->delimiter(',')
+        ->capture_default_str();
+    c->add_option("--device", o.device, "Vulkan device index or name substring");
+    c->add_option("--width", o.width, "Image width")->check(CLI::Range(1u, 16384u))->capture_default_str();
+    c->add_option("--height", o.height, "Image height")->check(CLI::Range(1u, 16384u))->capture_default_str();
+    c->add_option("--max-depth", o.max_depth, "Maximum depth (default: each scene's)")
+        ->check(CLI::Range(1u, 1000u));
+    c->add_option("--max-spp", o.max_spp, "Ladder: 1, 2, 4, ... up to this spp")
+        ->check(CLI::Range(1u, 1u << 24))
+        ->capture_default_str();
+    c->add_option("--ref-spp", o.ref_spp, "Reference spp (CPU, cached)")
+        ->check(CLI::Range(1u, 1u << 24))
+        ->capture_default_str();
+    c->add_option("--seed", o.seed, "Seed of the measured renders")->capture_default_str();
+    c->add_option("--threads", o.threads, "CPU threads for the ladder and table (0: all)")
+        ->check(CLI::Range(0u, 4096u));
+    c->add_option("--table-depths", o.table_depths, "Table: depths D at the fixed spp")
+        ->delimiter(',')
+        ->capture_default_str();
+    c->add_option("--table-spp", o.table_spp, "Table: spp S at the fixed depth")
+        ->delimiter(',')
+        ->capture_default_str();
+    c->add_option("--table-fixed-spp", o.table_fixed_spp, "Table: spp of the depth rows")
+        ->check(CLI::Range(1u, 1u << 24))
+        ->capture_default_str();
+    c->add_option("--table-fixed-depth", o.table_fixed_depth, "Table: depth of the spp rows")
+        ->check(CLI::Range(1u, 1000u))
+        ->capture_default_str();
+    c->add_option("--peer-spp", o.peer_spp, "Peer: N of the (t(N) - t(1)) / (N - 1) timing")
+        ->check(CLI::Range(1u, 1u << 20))
+        ->capture_default_str();
+    c->add_option("--peer-threads", o.peer_threads, "Peer: thread counts")
+        ->delimiter(',')
+        ->check(CLI::Range(1u, 4096u))
+        ->capture_default_str();
+    c->add_option("--peer-binary", o.peer_binary, "Embree's path tracer tutorial")->capture_default_str();
+    c->add_option("--out", o.out_dir, "Output directory")->capture_default_str();
+    c->add_option("--cache", o.cache_dir,
+                  "Reference cache (default $TWINPATH_CACHE, $XDG_CACHE_HOME/twinpath, "
+                  "~/.cache/twinpath)");
+    c->add_option("--assets", o.assets_dir,
+                  "Shared test meshes (default $TWINPATH_ASSETS, else ../shared/assets)");
+    c->add_option("--section", o.section, "Id of this run's section in the markdown file")
+        ->capture_default_str();
+    c->add_option("--markdown", o.markdown, "Merge the section into this file (BENCHMARKS.md)");
+    c->add_option("--from-json", o.from_json,
+                  "Only merge these bench.json results into --markdown (no rendering)")
+        ->delimiter(',');
+    c->add_flag("--quick", o.quick, "Tiny CI smoke size");
+    return {c, [run, c] {
+                run->o.command = command_line();
+                if (!run->o.from_json.empty()) return merge_only(run->o);
+                if (run->o.quick) apply_quick(run->o, *c);
+                return run_bench(*run);
+            }};
+}
+
+} // namespace tp
