@@ -23,6 +23,7 @@
 #include "bench/scene_hash.h"
 #include "bench/scenes.h"
 #include "bench/sweep.h"
+#include "stress/stress.h"
 #include "compare/text_file.h"
 #include "scene/flatten.h"
 #include "util/error.h"
@@ -399,8 +400,24 @@ Subcommand add_bench_command(CLI::App& app) {
                   "Only merge these bench.json results into --markdown (no rendering)")
         ->delimiter(',');
     c->add_flag("--quick", o.quick, "Tiny CI smoke size");
-    return {c, [run, c] {
+    // Issue 8: the numerical stress sweeps (cli/stress, docs/stress.md) instead of benchmarks;
+    // they use --out (default out/stress), --assets, --backends, --device, --threads, --quick.
+    auto stress = std::make_shared<bool>(false);
+    c->add_flag("--stress", *stress, "Numerical stress sweeps and their report (docs/stress.md)");
+    return {c, [run, c, stress] {
                 run->o.command = command_line();
+                if (*stress) {
+                    stress::StressOptions so;
+                    so.out_dir = c->count("--out") ? run->o.out_dir : "out/stress";
+                    so.assets_dir = resolve_assets_dir(run->o.assets_dir);
+                    so.backends = run->o.backends;
+                    so.device = run->o.device;
+                    so.threads = run->o.threads;
+                    so.quick = run->o.quick;
+                    so.self = fs::read_symlink("/proc/self/exe").string();
+                    so.command = run->o.command;
+                    return stress::run_stress(so);
+                }
                 if (!run->o.from_json.empty()) return merge_only(run->o);
                 if (run->o.quick) apply_quick(run->o, *c);
                 return run_bench(*run);

@@ -1,0 +1,71 @@
+// Helpers the stress cases share: the reference scene and its variants, rendering with the
+// NaN/Inf count, and the statistical comparison of two renders.
+#pragma once
+
+#include "stress/stress.h"
+
+#include "scene/scene.h"
+
+#include <algorithm>
+#include <chrono>
+
+namespace tp::stress {
+
+// The reference scene: a Phong floor, a glossy smooth sphere resting on it, a box, an emissive
+// quad facing down, a point light and a dim constant environment (so that no pixel is black),
+// framed by a fixed camera. All sizes are O(1) metres around the origin.
+Scene reference_scene(uint32_t image, uint32_t spp);
+
+// Material helpers.
+uint32_t add_material(Scene& s, const std::string& name, const Material& m);
+Material phong(vec3 kd, vec3 ks = vec3(0.0f), float ns = 1.0f);
+Material glass(float ior, vec3 tf = vec3(1.0f));
+Material emitter(vec3 ke);
+uint32_t add_mesh(Scene& s, Mesh m);
+void add_object(Scene& s, const std::string& name, uint32_t mesh, uint32_t material,
+                const glm::mat4& transform);
+
+struct Rendered {
+    RenderResult r;
+    uint64_t nonfinite_pixels = 0; // pixels of the film whose mean is NaN/Inf (0: dropped)
+    uint64_t black_pixels = 0;     // pixels with a mean of exactly 0 in every channel
+};
+Rendered render(const Engine& e, const FlatScene& f, uint32_t seed);
+
+// compare's two-sample verdict (docs/compare.md) on two renders; `p` receives its p-value.
+// Two independent renders (different seeds) of the same expectation are called different with
+// probability alpha; the renders are deterministic, so a test is reproducible.
+bool compare_consistent(const Rendered& a, const Rendered& b, double alpha, double& p);
+
+CaseResult make_case(const std::string& group, const std::string& name, const Engine& e,
+                     const std::string& expected);
+
+// Runs `f(result)` with the time measured and a RuntimeError or InputError turned into a failed
+// case that says what was thrown.
+template <typename F>
+CaseResult timed(CaseResult c, F&& f) {
+    const auto t0 = std::chrono::steady_clock::now();
+    try {
+        f(c);
+    } catch (const std::exception& ex) {
+        c.pass = false;
+        c.measured += std::string(c.measured.empty() ? "" : "; ") + "threw: " + ex.what();
+    }
+    c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    return c;
+}
+
+inline double cmax(const glm::dvec3& v) {
+    return std::max(v.x, std::max(v.y, v.z));
+}
+inline double cmin(const glm::dvec3& v) {
+    return std::min(v.x, std::min(v.y, v.z));
+}
+inline float cmax(const vec3& v) {
+    return std::max(v.x, std::max(v.y, v.z));
+}
+
+// Mean over the image of channel-averaged pixel means, and its standard error.
+void image_mean(const Film& f, double& mean, double& se);
+
+} // namespace tp::stress

@@ -1,0 +1,297 @@
+// Watertightness: rays aimed exactly at the shared edges and vertices of a closed mesh must
+// not pass through it. Targets: every vertex (exact) and points along every edge shared by two
+// triangles. Each ray starts outside the surface, in the cone of directions that cross all the
+// faces around the target from their front side: then any ray through the target, moved by
+// rounding, still crosses one of those faces next to it (they share the edge or vertex without
+// a gap), so a watertight intersector reports a hit at t <= |target - origin| (1 + 1e-4).
+// Anything else (no hit, or a farther one) is a leak and counted as a miss; 0 are allowed.
+// The 1e-4 covers the rounding of the target and of t (the faces meet at the target; a farther
+// hit is another part of the mesh at least ~1e-3 of the mesh size behind).
+#include "stress/common.h"
+#include "stress/gpu_compute.h"
+
+#include "cpu_ref/embree_accel.h"
+#include "scene/generators.h"
+#include "scene/load.h"
+#include "shaders/interface.h"
+#include "stress_trace.spv.h"
+#include "vulkan_rt/bvh_builder.h"
+#include "vulkan_rt/scene_buffers.h"
+
+#include <fmt/format.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <random>
+
+namespace fs = std::filesystem;
+
+namespace tp::stress {
+namespace {
+
+struct Target {
+    vec3 p;
+    std::vector<vec3> normals; // unit normals of the faces around it
+};
+
+struct RaySet {
+    std::string mesh;
+    FlatScene scene;
+    std::vector<Ray> rays;
+    std::vector<float> t_target;
+    size_t edges = 0, vertices = 0, boundary_edges = 0;
+};
+
+// Shared edges and vertices (a vertex counts when none of its edges is a boundary edge).
+std::vector<Target> targets(const Mesh& m, size_t& edges, size_t& vertices, size_t& boundary) {
+    std::map<std::pair<uint32_t, uint32_t>, std::vector<uint32_t>> edge_faces;
+    std::vector<vec3> face_n(m.triangles.size());
+    std::vector<std::vector<uint32_t>> vertex_faces(m.positions.size());
+    for (uint32_t f = 0; f < m.triangles.size(); ++f) {
+        const uvec3 t = m.triangles[f];
+        face_n[f] = glm::normalize(
+            glm::cross(m.positions[t.y] - m.positions[t.x], m.positions[t.z] - m.positions[t.x]));
+        for (int k = 0; k < 3; ++k) {
+            const uint32_t a = t[k], b = t[(k + 1) % 3];
+            edge_faces[{std::min(a, b), std::max(a, b)}].push_back(f);
+            vertex_faces[a].push_back(f);
+        }
+    }
+    std::vector<bool> open(m.positions.size(), false);
+    std::vector<Target> out;
+    edges = vertices = boundary = 0;
+    for (const auto& [e, faces] : edge_faces) {
+        if (faces.size() != 2) {
+            ++boundary;
+            open[e.first] = open[e.second] = true;
+            continue;
+        }
+        // A sliver pair (almost folded edge) has no cone of common front directions.
+        if (glm::dot(face_n[faces[0]], face_n[faces[1]]) < -0.5f) continue;
+        ++edges;
+        out.push_back({vec3(0.5f) * (m.positions[e.first] + m.positions[e.second]),
+                       {face_n[faces[0]], face_n[faces[1]]}});
+        // A second point along the edge, a quarter of the way.
+        out.push_back(
+            {m.positions[e.first] + 0.25f * (m.positions[e.second] - m.positions[e.first]),
+             {face_n[faces[0]], face_n[faces[1]]}});
+    }
+    for (uint32_t v = 0; v < m.positions.size(); ++v) {
+        if (open[v] || vertex_faces[v].empty()) continue;
+        Target t{m.positions[v], {}};
+        for (uint32_t f : vertex_faces[v]) t.normals.push_back(face_n[f]);
+        ++vertices;
+        out.push_back(t);
+    }
+    return out;
+}
+
+RaySet make_rays(const std::string& name, Mesh mesh, uint64_t min_rays) {
+    RaySet rs;
+    rs.mesh = name;
+    size_t boundary = 0;
+    const std::vector<Target> tg = targets(mesh, rs.edges, rs.vertices, boundary);
+    rs.boundary_edges = boundary;
+    vec3 lo(FLOAT_MAX), hi(-FLOAT_MAX);
+    for (const vec3& p : mesh.positions) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    const float size = glm::length(hi - lo);
+
+    Scene s;
+    s.path = "stress: " + name;
+    Material m = default_material();
+    m.kd = vec3(0.5f);
+    s.materials = {m};
+    s.material_names = {"grey"};
+    s.meshes = {std::move(mesh)};
+    Object o;
+    o.name = name;
+    s.objects = {o};
+    s.settings.width = s.settings.height = 8;
+    rs.scene = flatten(s);
+
+    std::mt19937 rng(23);
+    std::uniform_real_distribution<float> u(0.0f, 1.0f);
+    std::normal_distribution<float> g;
+    const uint64_t per_target = (min_rays + tg.size() - 1) / tg.size();
+    rs.rays.reserve(per_target * tg.size());
+    for (const Target& t : tg) {
+        vec3 avg(0.0f);
+        for (const vec3& n : t.normals) avg += n;
+        avg = glm::normalize(avg);
+        for (uint64_t k = 0; k < per_target; ++k) {
+            // A direction into the surface: -avg tilted at random, kept only when it crosses
+            // every face around the target from the front (dot(d, n_f) < 0 with a margin).
+            vec3 d = -avg;
+            for (int tries = 0; tries < 8; ++tries) {
+                const vec3 cand = glm::normalize(
+                    -avg + 0.6f * u(rng) * glm::normalize(vec3(g(rng), g(rng), g(rng))));
+                bool ok = true;
+                for (const vec3& n : t.normals) ok = ok && glm::dot(cand, n) < -0.05f;
+                if (ok) {
+                    d = cand;
+                    break;
+                }
+            }
+            const float dist = size * (0.02f + 0.5f * u(rng));
+            Ray r;
+            r.origin = t.p - dist * d;
+            // The direction from the rounded origin to the exact target.
+            const vec3 to = t.p - r.origin;
+            const float len = glm::length(to);
+            r.dir = to / len;
+            r.tmax = FLOAT_MAX;
+            r.pad0 = 0;
+            rs.rays.push_back(r);
+            rs.t_target.push_back(len);
+        }
+    }
+    return rs;
+}
+
+std::vector<RaySet> ray_sets(const Size& s, const std::string& assets_dir,
+                             std::vector<CaseResult>& skipped) {
+    std::vector<RaySet> sets;
+    sets.push_back(
+        make_rays("icosphere (5120 faces)", make_icosphere(4, false), s.watertight_rays));
+    const fs::path bunny = fs::path(assets_dir) / "bunny" / "stanford-bunny.obj";
+    if (fs::exists(bunny)) {
+        std::vector<std::string> warnings;
+        Scene b = load_scene(bunny.string(), warnings);
+        sets.push_back(make_rays("bunny", b.meshes.at(0), s.watertight_rays));
+    } else {
+        CaseResult c;
+        c.group = "watertight";
+        c.name = "bunny";
+        c.skipped = true;
+        c.measured = fmt::format("{} not found (--assets DIR)", bunny.string());
+        skipped.push_back(c);
+    }
+    return sets;
+}
+
+CaseResult verdict(const RaySet& rs, const std::vector<float>& t, const std::vector<uint8_t>& found,
+                   const std::string& backend, const std::string& mode, uint64_t truncated) {
+    CaseResult c;
+    c.group = "watertight";
+    c.name = fmt::format("{}: {} shared edges (2 points each), {} vertices", rs.mesh, rs.edges,
+                         rs.vertices);
+    c.backend = backend;
+    c.mode = mode;
+    c.expected = "0 misses: every ray hits at t <= |target - origin| (1 + 1e-4)";
+    uint64_t misses = 0;
+    for (size_t i = 0; i < rs.rays.size(); ++i) {
+        c.nan += std::isnan(t[i]);
+        c.inf += found[i] && std::isinf(t[i]);
+        if (!found[i] || !(t[i] <= rs.t_target[i] * (1.0f + 1e-4f))) {
+            if (std::getenv("TP_STRESS_DEBUG") && misses < 5)
+                fmt::print("miss: found {} t {} target {} ray {} {} {} dir {} {} {}\n", found[i],
+                           t[i], rs.t_target[i], rs.rays[i].origin.x, rs.rays[i].origin.y,
+                           rs.rays[i].origin.z, rs.rays[i].dir.x, rs.rays[i].dir.y,
+                           rs.rays[i].dir.z);
+            ++misses;
+        }
+    }
+    c.checked = rs.rays.size();
+    c.pass = misses == 0 && truncated == 0 && c.nan == 0 && c.inf == 0 && c.checked >= 1000000;
+    c.measured = fmt::format(
+        "{} misses in {} rays{}{}", misses, rs.rays.size(),
+        truncated ? fmt::format(", {} traversals cut by the loop budget", truncated) : "",
+        rs.boundary_edges ? fmt::format(" ({} boundary edges left out: the mesh "
+                                        "has holes)",
+                                        rs.boundary_edges)
+                          : "");
+    return c;
+}
+
+} // namespace
+
+std::vector<CaseResult> watertight_cases_cpu(const Size& s, const std::string& assets_dir) {
+    std::vector<CaseResult> out;
+    for (const RaySet& rs : ray_sets(s, assets_dir, out)) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const EmbreeAccel embree(rs.scene);
+        std::vector<float> t(rs.rays.size());
+        std::vector<uint8_t> found(rs.rays.size());
+        for (size_t i = 0; i < rs.rays.size(); ++i) {
+            const Hit h = embree.intersect(rs.rays[i]);
+            found[i] = h.found;
+            t[i] = h.t;
+        }
+        CaseResult c = verdict(rs, t, found, "cpu", "embree", 0);
+        c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        out.push_back(c);
+    }
+    for (CaseResult& c : out)
+        if (c.skipped) c.backend = "cpu", c.mode = "embree";
+    return out;
+}
+
+std::vector<CaseResult> watertight_cases_gpu(const VulkanContext& ctx, const Size& s,
+                                             const std::string& assets_dir) {
+    struct StressHit {
+        float t;
+        uint32_t found, budget_held, pad0;
+    };
+    std::vector<CaseResult> out;
+    for (const RaySet& rs : ray_sets(s, assets_dir, out)) {
+        const auto t0 = std::chrono::steady_clock::now();
+        const BvhBuild bvh = build_bvh(rs.scene);
+        const SceneBuffers sb = upload_scene(ctx, rs.scene, rs.scene.params, bvh.mesh_roots, 0);
+        const BvhBuffers bb = upload_bvh(ctx, bvh);
+        const Buffer dummy(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+        std::vector<const Buffer*> bound;
+        for (const Buffer& b : sb.slots) bound.push_back(&b);
+        bound.push_back(&bb.nodes);
+        bound.push_back(&bb.triangles);
+        bound.push_back(&dummy); // accumulators
+        bound.push_back(&dummy); // counters
+        std::vector<float> t(rs.rays.size());
+        std::vector<uint8_t> found(rs.rays.size());
+        uint64_t truncated = 0;
+        // Chunks of 2^18 rays: a few MB per dispatch, and a cut traversal is retried alone.
+        const size_t chunk = size_t(1) << 18;
+        for (size_t begin = 0; begin < rs.rays.size(); begin += chunk) {
+            std::vector<Ray> rays(rs.rays.begin() + begin,
+                                  rs.rays.begin() + std::min(rs.rays.size(), begin + chunk));
+            std::vector<size_t> index(rays.size());
+            for (size_t i = 0; i < index.size(); ++i) index[i] = begin + i;
+            for (int attempt = 0; attempt < 4 && !rays.empty(); ++attempt) {
+                BatchParams bp{};
+                bp.sample_count = uint32_t(rays.size());
+                bp.bvh_top_root = bvh.top_root;
+                bp.probe_iterations = LOOP_PROBE_ITERATIONS;
+                const auto res =
+                    run_shader(ctx, tp_spirv_stress_trace, sizeof(tp_spirv_stress_trace),
+                               {bytes_of(rays)}, {rays.size() * sizeof(StressHit)}, &bp, sizeof(bp),
+                               uint32_t(rays.size() + 63) / 64, bound);
+                const std::vector<StressHit> hits = as_vector<StressHit>(res[0]);
+                std::vector<Ray> again;
+                std::vector<size_t> again_index;
+                for (size_t i = 0; i < rays.size(); ++i) {
+                    if (!hits[i].budget_held) {
+                        again.push_back(rays[i]);
+                        again_index.push_back(index[i]);
+                        continue;
+                    }
+                    t[index[i]] = hits[i].t;
+                    found[index[i]] = uint8_t(hits[i].found);
+                }
+                rays.swap(again);
+                index.swap(again_index);
+            }
+            truncated += rays.size();
+        }
+        CaseResult c = verdict(rs, t, found, "vulkan", "compute", truncated);
+        c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        out.push_back(c);
+    }
+    for (CaseResult& c : out)
+        if (c.skipped) c.backend = "vulkan", c.mode = "compute";
+    return out;
+}
+
+} // namespace tp::stress

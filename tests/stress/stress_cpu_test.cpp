@@ -1,0 +1,54 @@
+// The stress suite on the CPU backend (Embree) and the C++ shared functions, at CI size. Each
+// case's expected outcome and tolerance are stated where the case is built (cli/stress/*.cpp)
+// and derived in docs/stress.md; in short:
+//   - renders that must estimate the same image are judged by compare's two-sample test at
+//     alpha = 1e-3 per comparison (about 40 comparisons per backend: a family-wise false-alarm
+//     rate of 4 % for a fresh seed; the seeds are fixed, so the verdicts are reproducible);
+//   - furnaces whose every sample is exactly 1 (or n^2) without roulette: 1e-3 relative, the
+//     float rounding of 512 bounces' weights (~1e-6 each) with room;
+//   - accumulation: 6 significant digits, 1e-6 relative, as the issue asks;
+//   - watertightness: 0 misses in >= 1e6 rays per mesh.
+#include "stress_common.h"
+
+#include "support/test_paths.h"
+
+namespace tp::stress {
+
+TEST_CASE("stress: scale 1e-4 to 1e5 and translation 1e5 on the CPU", "[stress]") {
+    require_all(scale_cases(cpu_engine(), small_size()));
+}
+
+TEST_CASE("stress: watertight icosphere and bunny on the CPU", "[stress]") {
+    require_all(watertight_cases_cpu(small_size(), tp::test::assets_dir()));
+}
+
+TEST_CASE("stress: Phong extremes in C++", "[stress]") {
+    require_all(brdf_cases_cpp(small_size()));
+}
+
+TEST_CASE("stress: dielectrics on the CPU", "[stress]") {
+    require_all(dielectric_cases(cpu_engine(), small_size()));
+}
+
+TEST_CASE("stress: degenerate geometry on the CPU", "[stress]") {
+    require_all(degenerate_cases(cpu_engine(), small_size()));
+}
+
+TEST_CASE("stress: NaN vertices are rejected at load", "[stress]") {
+    require_all({nan_vertex_case(tp::test::twinpath_bin(), tp::test::temp_dir("stress_nan"))});
+}
+
+TEST_CASE("stress: accumulation in the film and on the CPU", "[stress]") {
+    require_all(film_accumulation_cases(small_size()));
+    require_all(accumulation_render_cases(cpu_engine(), small_size()));
+}
+
+TEST_CASE("stress: lights on the CPU", "[stress]") {
+    require_all(light_cases(cpu_engine(), small_size()));
+}
+
+TEST_CASE("stress: shading normals below the surface on the CPU", "[stress]") {
+    require_all(shading_normal_cases(cpu_engine(), small_size()));
+}
+
+} // namespace tp::stress

@@ -1,0 +1,68 @@
+// The stress suite on the Vulkan compute mode (lavapipe in CI) and the GLSL shared functions,
+// at CI size; expectations as in stress_cpu_test.cpp. Pipeline mode runs in
+// `twinpath bench --stress` on a device that has it.
+#include "stress_common.h"
+
+#include "support/test_paths.h"
+#include "vulkan_rt/context.h"
+#include "vulkan_rt/validation.h"
+
+namespace tp::stress {
+namespace {
+
+VulkanContext& context() {
+    static VulkanContext ctx("", "compute");
+    return ctx;
+}
+
+Engine gpu() {
+    return vulkan_engine("compute");
+}
+
+// The GPU renders are slower on lavapipe: a smaller image, the same expectations.
+Size gpu_size() {
+    Size s = small_size();
+    s.image = 16;
+    s.spp = 64;
+    s.furnace_spp = 16;
+    s.point_lights = 2000;
+    return s;
+}
+
+} // namespace
+
+TEST_CASE("stress GPU: watertight icosphere and bunny in the compute traversal", "[stress][gpu]") {
+    require_all(watertight_cases_gpu(context(), small_size(), tp::test::assets_dir()));
+    CHECK(context().instance().validation_messages() == 0);
+}
+
+TEST_CASE("stress GPU: Phong extremes in GLSL", "[stress][gpu]") {
+    require_all(brdf_cases_glsl(context(), small_size()));
+    CHECK(context().instance().validation_messages() == 0);
+}
+
+TEST_CASE("stress GPU: scale and translation in compute mode", "[stress][gpu]") {
+    require_all(scale_cases(gpu(), gpu_size()));
+}
+
+TEST_CASE("stress GPU: dielectrics in compute mode", "[stress][gpu]") {
+    require_all(dielectric_cases(gpu(), gpu_size()));
+}
+
+TEST_CASE("stress GPU: degenerate geometry in compute mode", "[stress][gpu]") {
+    require_all(degenerate_cases(gpu(), gpu_size()));
+}
+
+TEST_CASE("stress GPU: accumulation in compute mode", "[stress][gpu]") {
+    require_all(accumulation_render_cases(gpu(), small_size()));
+}
+
+TEST_CASE("stress GPU: lights in compute mode", "[stress][gpu]") {
+    require_all(light_cases(gpu(), gpu_size()));
+}
+
+TEST_CASE("stress GPU: shading normals in compute mode", "[stress][gpu]") {
+    require_all(shading_normal_cases(gpu(), gpu_size()));
+}
+
+} // namespace tp::stress
