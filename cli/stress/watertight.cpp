@@ -249,6 +249,9 @@ std::vector<CaseResult> watertight_cases_gpu(const VulkanContext& ctx, const Siz
         bound.push_back(&bb.triangles);
         bound.push_back(&dummy); // accumulators
         bound.push_back(&dummy); // counters
+        // Whatever slots the render interface adds after these (debug buffers) get the
+        // placeholder too: the rays and hits follow at BINDING_COUNT.
+        while (bound.size() < BINDING_COUNT) bound.push_back(&dummy);
         std::vector<float> t(rs.rays.size());
         std::vector<uint8_t> found(rs.rays.size());
         uint64_t truncated = 0;
