@@ -23,9 +23,9 @@
 #include "bench/scene_hash.h"
 #include "bench/scenes.h"
 #include "bench/sweep.h"
-#include "stress/stress.h"
 #include "compare/text_file.h"
 #include "scene/flatten.h"
+#include "stress/stress.h"
 #include "util/error.h"
 
 #include <fmt/core.h>
@@ -87,9 +87,9 @@ json lights_json(const FlatScene& f) {
         directional += l.type == LIGHT_DIRECTIONAL;
         triangles += l.type == LIGHT_TRIANGLE;
     }
-    const std::string env = f.params.env_light == NO_INDEX           ? "none"
+    const std::string env = f.params.env_light == NO_INDEX       ? "none"
                             : f.params.env_texture == NO_TEXTURE ? "constant"
-                                                                   : "map";
+                                                                 : "map";
     return {{"point", point},
             {"directional", directional},
             {"emissive_triangles", triangles},
@@ -105,6 +105,12 @@ FlatScene flatten_for_bench(Scene scene, const BenchOptions& o) {
     return flatten(scene);
 }
 
+// Records what was left out and why; it is said now on stderr and later in the report.
+void skip(BenchRun& run, const std::string& what, const std::string& reason) {
+    fmt::print(stderr, "twinpath: bench: skipping {}: {}\n", what, reason);
+    run.skipped.push_back({what, reason});
+}
+
 // Runs `f` for one backend; a run-time failure (device lost, out of memory) is recorded and
 // the benchmark goes on with the next backend.
 template <typename F>
@@ -112,17 +118,17 @@ void guarded(BenchRun& run, const std::string& what, F&& f) {
     try {
         f();
     } catch (const RuntimeError& e) {
-        run.skipped.push_back({what, e.what()});
+        skip(run, what, fmt::format("failed: {}", e.what()));
         run.failed = true;
-        fmt::print(stderr, "twinpath: bench: {} failed: {}\n", what, e.what());
     }
 }
 
 void ladder(BenchRun& run, const std::string& name, const FlatScene& flat, json& sj) {
     ProgressBar ref_bar(run.next_label(fmt::format("{} reference ({} spp)", name, run.o.ref_spp)));
-    const Reference ref = reference_for(flat, name, run.o.ref_spp, run.cache_dir, ref_bar.callback());
-    sj["reference"] = {{"spp", ref.spp},    {"seed", kReferenceSeed}, {"file", ref.file},
-                       {"key", ref.key},    {"cached", ref.cached},   {"render_s", ref.render_s}};
+    const Reference ref =
+        reference_for(flat, name, run.o.ref_spp, run.cache_dir, ref_bar.callback());
+    sj["reference"] = {{"spp", ref.spp}, {"seed", kReferenceSeed}, {"file", ref.file},
+                       {"key", ref.key}, {"cached", ref.cached},   {"render_s", ref.render_s}};
     sj["ladder"] = json::array();
     for (const Backend& b : run.backends) {
         const std::string what = fmt::format("{} {} ladder", name, b.label());
@@ -157,21 +163,16 @@ void peer(BenchRun& run, const std::string& name, Scene scene, json& sj) {
         reason = fmt::format("Embree's path tracer tutorial is not at {} (Debian package "
                              "embree-tools; --peer-binary PATH)",
                              run.o.peer_binary);
-    ProgressBar bar(run.next_label(what));
+    ProgressBar bar(run.next_label(what)); // draws nothing unless updated
     if (!reason.empty()) {
-        run.skipped.push_back({what, reason});
+        skip(run, what, reason);
         return;
     }
-    SceneOverrides ov;
-    ov.width = run.o.width;
-    ov.height = run.o.height;
-    ov.max_depth = run.o.max_depth;
-    apply_overrides(scene, ov);
-    scene.settings.min_depth = scene.settings.max_depth; // Russian roulette off (peer.h)
-    FlatScene flat = flatten(scene);
+    FlatScene flat = flatten_for_bench(std::move(scene), run.o);
+    flat.params.min_depth = flat.params.max_depth; // Russian roulette off (peer.h)
     flat.name = name;
-    const PeerRun pr = run_peer(flat, run.o, (fs::path(run.cache_dir) / "peer" / name).string(),
-                                bar.callback());
+    const PeerRun pr =
+        run_peer(flat, run.o, (fs::path(run.cache_dir) / "peer" / name).string(), bar.callback());
     sj["peer"] = peer_json(pr);
     sj["peer_variant"] = changes;
     fmt::print("bench: {}: done\n", what);
@@ -181,7 +182,8 @@ json result_header(const BenchRun& run) {
     const BenchOptions& o = run.o;
     json sections = json::array();
     std::string names;
-    for (const auto& [on, name] : {std::pair{o.ladder, "ladder"}, {o.table, "table"}, {o.peer, "peer"}})
+    for (const auto& [on, name] :
+         {std::pair{o.ladder, "ladder"}, {o.table, "table"}, {o.peer, "peer"}})
         if (on) {
             sections.push_back(name);
             names += (names.empty() ? "" : ", ") + std::string(name);
@@ -195,13 +197,14 @@ json result_header(const BenchRun& run) {
     json r;
     r["schema"] = "twinpath-bench/1";
     r["section"] = o.section;
-    r["title"] = fmt::format("`{}`: {} on {}", o.section, names,
-                             labels.empty() ? "the CPU" : labels);
+    r["title"] =
+        fmt::format("`{}`: {} on {}", o.section, names, labels.empty() ? "the CPU" : labels);
     r["command"] = o.command;
     r["twinpath_version"] = TWINPATH_VERSION;
     r["renderer_version"] = renderer_version();
     r["started"] = utc_timestamp();
-    r["host"] = {{"cpu", cpu_model()}, {"cores", cpu_cores()}, {"load_average_start", load_average()}};
+    r["host"] = {
+        {"cpu", cpu_model()}, {"cores", cpu_cores()}, {"load_average_start", load_average()}};
     r["sections"] = sections;
     r["backends"] = backends;
     r["settings"] = {
@@ -223,20 +226,26 @@ json result_header(const BenchRun& run) {
     return r;
 }
 
+// The files derived from a result (plots, CSV, bench.md) into `dir`, and its section merged
+// into `markdown` when one is given, with links relative to the markdown file.
+void write_derived_files(json& r, const std::string& dir, const std::string& markdown) {
+    write_plots(r, dir);
+    write_csv_files(r, dir);
+    write_text_file((fs::path(dir) / "bench.md").string(), markdown_section(r, "."));
+    if (markdown.empty()) return;
+    const fs::path md_dir = fs::absolute(markdown).parent_path();
+    const std::string section = r["section"].get<std::string>();
+    merge_markdown_section(
+        markdown, section,
+        markdown_section(r, fs::relative(fs::absolute(dir), md_dir).generic_string()));
+    fmt::print("bench: section '{}' of {}\n", section, markdown);
+}
+
 void write_outputs(json& r, const BenchOptions& o) {
     fs::create_directories(o.out_dir);
-    write_plots(r, o.out_dir);
-    write_csv_files(r, o.out_dir);
+    write_derived_files(r, o.out_dir, o.markdown);
     write_text_file((fs::path(o.out_dir) / "bench.json").string(), r.dump(2) + "\n");
-    write_text_file((fs::path(o.out_dir) / "bench.md").string(), markdown_section(r, "."));
-    if (!o.markdown.empty()) {
-        const fs::path md_dir = fs::absolute(o.markdown).parent_path();
-        merge_markdown_section(o.markdown, o.section,
-                               markdown_section(r, fs::relative(fs::absolute(o.out_dir), md_dir)
-                                                       .generic_string()));
-    }
-    fmt::print("bench: wrote {}/bench.json, bench.md, CSV and plots{}\n", o.out_dir,
-               o.markdown.empty() ? "" : ", section '" + o.section + "' of " + o.markdown);
+    fmt::print("bench: wrote {}/bench.json, bench.md, CSV and plots\n", o.out_dir);
 }
 
 int run_bench(BenchRun& run) {
@@ -247,22 +256,26 @@ int run_bench(BenchRun& run) {
     o.table_spp.erase(std::unique(o.table_spp.begin(), o.table_spp.end()), o.table_spp.end());
     run.cache_dir = resolve_cache_dir(o.cache_dir);
     run.assets_dir = resolve_assets_dir(o.assets_dir);
-    if (o.ladder || o.table) run.backends = expand_backends(o.backends, o.device, o.threads, run.skipped);
+    if (o.ladder || o.table) {
+        std::vector<Skip> unavailable;
+        run.backends = expand_backends(o.backends, o.device, o.threads, unavailable);
+        for (const Skip& s : unavailable) skip(run, s.what, s.reason);
+    }
     json r = result_header(run);
     const auto t0 = std::chrono::steady_clock::now();
 
     std::vector<std::pair<std::string, Scene>> scenes;
     for (const std::string& name : o.scenes) {
         std::string reason;
-        std::optional<Scene> s = load_bench_scene(name, run.assets_dir,
-                                                  (fs::path(run.cache_dir) / "scenes").string(), reason);
+        std::optional<Scene> s = load_bench_scene(
+            name, run.assets_dir, (fs::path(run.cache_dir) / "scenes").string(), reason);
         if (!s) {
-            fmt::print(stderr, "twinpath: bench: skipping: {}\n", reason);
-            run.skipped.push_back({name, reason});
+            skip(run, name, reason);
             continue;
         }
         scenes.emplace_back(fs::path(name).stem().string(), std::move(*s));
     }
+    if (scenes.empty()) input_error("bench: none of the scenes could be loaded (above)");
     const int per_scene = (o.ladder ? 1 + int(run.backends.size()) : 0) +
                           (o.table ? int(run.backends.size()) : 0) + (o.peer ? 1 : 0);
     run.steps = per_scene * int(scenes.size());
@@ -287,17 +300,19 @@ int run_bench(BenchRun& run) {
     }
 
     r["skipped"] = json::array();
-    for (const Skip& s : run.skipped) r["skipped"].push_back({{"what", s.what}, {"reason", s.reason}});
+    for (const Skip& s : run.skipped)
+        r["skipped"].push_back({{"what", s.what}, {"reason", s.reason}});
     r["host"]["load_average_end"] = load_average();
     r["elapsed_s"] = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     write_outputs(r, o);
     return run.failed ? 3 : 0;
 }
 
-// --from-json: results of earlier runs (this machine's or another's) into the markdown file.
+// --from-json: results of earlier runs (this machine's or another's, where only bench.json
+// came back) rendered again: plots, CSV and bench.md beside each JSON file, and its section
+// merged into the markdown file.
 int merge_only(const BenchOptions& o) {
     if (o.markdown.empty()) input_error("--from-json needs --markdown FILE to merge into");
-    const fs::path md_dir = fs::absolute(o.markdown).parent_path();
     for (const std::string& path : o.from_json) {
         std::ifstream in(path);
         if (!in) input_error("{}: cannot open file", path);
@@ -309,11 +324,12 @@ int merge_only(const BenchOptions& o) {
         }
         if (r.value("schema", "") != "twinpath-bench/1")
             input_error("{}: not a twinpath bench result (schema twinpath-bench/1)", path);
-        const std::string base =
-            fs::relative(fs::absolute(path).parent_path(), md_dir).generic_string();
-        merge_markdown_section(o.markdown, r["section"].get<std::string>(), markdown_section(r, base));
-        fmt::print("bench: section '{}' of {} from {}\n", r["section"].get<std::string>(),
-                   o.markdown, path);
+        try {
+            write_derived_files(r, fs::absolute(path).parent_path().string(), o.markdown);
+        } catch (const json::exception& e) {
+            input_error("{}: a field of the bench result is missing or malformed: {}", path,
+                        e.what());
+        }
     }
     return 0;
 }
@@ -354,8 +370,12 @@ Subcommand add_bench_command(CLI::App& app) {
         ->delimiter(',')
         ->capture_default_str();
     c->add_option("--device", o.device, "Vulkan device index or name substring");
-    c->add_option("--width", o.width, "Image width")->check(CLI::Range(1u, 16384u))->capture_default_str();
-    c->add_option("--height", o.height, "Image height")->check(CLI::Range(1u, 16384u))->capture_default_str();
+    c->add_option("--width", o.width, "Image width")
+        ->check(CLI::Range(1u, 16384u))
+        ->capture_default_str();
+    c->add_option("--height", o.height, "Image height")
+        ->check(CLI::Range(1u, 16384u))
+        ->capture_default_str();
     c->add_option("--max-depth", o.max_depth, "Maximum depth (default: each scene's)")
         ->check(CLI::Range(1u, 1000u));
     c->add_option("--max-spp", o.max_spp, "Ladder: 1, 2, 4, ... up to this spp")
@@ -386,7 +406,8 @@ Subcommand add_bench_command(CLI::App& app) {
         ->delimiter(',')
         ->check(CLI::Range(1u, 4096u))
         ->capture_default_str();
-    c->add_option("--peer-binary", o.peer_binary, "Embree's path tracer tutorial")->capture_default_str();
+    c->add_option("--peer-binary", o.peer_binary, "Embree's path tracer tutorial")
+        ->capture_default_str();
     c->add_option("--out", o.out_dir, "Output directory")->capture_default_str();
     c->add_option("--cache", o.cache_dir,
                   "Reference cache (default $TWINPATH_CACHE, $XDG_CACHE_HOME/twinpath, "
@@ -397,7 +418,8 @@ Subcommand add_bench_command(CLI::App& app) {
         ->capture_default_str();
     c->add_option("--markdown", o.markdown, "Merge the section into this file (BENCHMARKS.md)");
     c->add_option("--from-json", o.from_json,
-                  "Only merge these bench.json results into --markdown (no rendering)")
+                  "No rendering: plots, CSV and bench.md again beside each of these bench.json "
+                  "files, and their sections merged into --markdown")
         ->delimiter(',');
     c->add_flag("--quick", o.quick, "Tiny CI smoke size");
     // Issue 8: the numerical stress sweeps (cli/stress, docs/stress.md) instead of benchmarks;

@@ -33,7 +33,9 @@ std::vector<Backend> expand_backends(const std::vector<std::string>& requested,
             add({"cpu", "embree", cpu_device(cpu_threads)});
             continue;
         }
-        const std::string mode = r == "vulkan" ? "" : r.rfind("vulkan:", 0) == 0 ? r.substr(7) : "-";
+        const std::string mode = r == "vulkan"                ? ""
+                                 : r.rfind("vulkan:", 0) == 0 ? r.substr(7)
+                                                              : "-";
         if (mode == "-" || (!mode.empty() && mode != "compute" && mode != "pipeline"))
             input_error("--backends: unknown backend '{}' (expected cpu, vulkan, vulkan:compute "
                         "or vulkan:pipeline)",

@@ -19,8 +19,8 @@ struct LogLogFit {
 LogLogFit fit_loglog(const std::vector<double>& t, const std::vector<double>& e);
 
 // The time at which the fitted line reaches `target`, if some measured e is at or below the
-// target (an interpolation; e <= 0 counts as reached); empty when the measurements never got there ("not reached": the
-// line is not extrapolated beyond the data) or the fit is not a falling line.
+// target (an interpolation; e <= 0 counts as reached); empty when the measurements never got there
+// ("not reached": the line is not extrapolated beyond the data) or the fit is not a falling line.
 std::optional<double> time_to_reach(const LogLogFit& fit, const std::vector<double>& e,
                                     double target);
 

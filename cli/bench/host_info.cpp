@@ -14,9 +14,10 @@ namespace {
 
 // Quotes an argument for a POSIX shell when it holds anything beyond a safe set.
 std::string shell_word(const std::string& s) {
-    const bool safe = !s.empty() && s.find_first_not_of("abcdefghijklmnopqrstuvwxyz"
-                                                        "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
-                                                        "0123456789_-+=.,/:@%") == std::string::npos;
+    const bool safe =
+        !s.empty() && s.find_first_not_of("abcdefghijklmnopqrstuvwxyz"
+                                          "ABCDEFGHIJKLMNOPQRSTUVWXYZ"
+                                          "0123456789_-+=.,/:@%") == std::string::npos;
     if (safe) return s;
     std::string q = "'";
     for (char c : s) q += c == '\'' ? std::string("'\\''") : std::string(1, c);

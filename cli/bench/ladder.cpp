@@ -1,24 +1,14 @@
 #include "bench/ladder.h"
 
+#include "bench/result_json.h"
 #include "compare/convergence.h"
 #include "compare/metrics.h"
 
 #include <fmt/format.h>
 
-#include <cmath>
+#include <limits>
 
 namespace tp::bench {
-namespace {
-
-nlohmann::json optional_number(const std::optional<double>& v) {
-    return v ? nlohmann::json(*v) : nlohmann::json(nullptr);
-}
-
-nlohmann::json finite_or_null(double v) {
-    return std::isfinite(v) ? nlohmann::json(v) : nlohmann::json(nullptr);
-}
-
-} // namespace
 
 std::vector<uint32_t> ladder_counts(uint32_t max_spp) {
     std::vector<uint32_t> counts;
@@ -43,8 +33,8 @@ LadderRun run_ladder(const FlatScene& scene, const Backend& backend, const Refer
     opt.on_checkpoint = [&](const RenderResult& snap) {
         ExrImage img = snap.film.to_exr();
         img.integers["twinpath:spp"] = snap.stats.spp;
-        snapshots.push_back(rgb_image_from_exr(
-            img, fmt::format("{} {} spp", backend.label(), snap.stats.spp)));
+        snapshots.push_back(
+            rgb_image_from_exr(img, fmt::format("{} {} spp", backend.label(), snap.stats.spp)));
         LadderPoint p;
         p.spp = snap.stats.spp;
         p.wall_s = snap.stats.wall_time_s;
@@ -89,29 +79,29 @@ nlohmann::json ladder_json(const LadderRun& run) {
     j["build_s"] = run.build_s;
     j["reference_noise"] = run.reference_noise;
     j["V"] = run.V;
-    j["spp_slope"] = finite_or_null(run.spp_slope);
+    j["spp_slope"] = number_or_null(run.spp_slope);
     j["fit"] = run.fit.valid() ? nlohmann::json{{"log10_intercept", run.fit.intercept},
                                                 {"slope", run.fit.slope},
                                                 {"points", run.fit.points}}
                                : nlohmann::json(nullptr);
-    j["time_to_relmse"] = {{"1e-2", optional_number(run.time_to_1e2)},
-                           {"1e-3", optional_number(run.time_to_1e3)}};
+    j["time_to_relmse"] = {{"1e-2", number_or_null(run.time_to_1e2)},
+                           {"1e-3", number_or_null(run.time_to_1e3)}};
     nlohmann::json pts = nlohmann::json::array();
     for (const LadderPoint& p : run.points) {
         const double t = p.wall_s;
+        // The thesis's efficiency epsilon = 1 / (V T) (sec. 2.6), V the error left at time T.
+        const double efficiency =
+            p.excess > 0 && t > 0 ? 1.0 / (p.excess * t) : std::numeric_limits<double>::quiet_NaN();
+        nlohmann::json rays = rays_json(p.rays);
         pts.push_back({{"spp", p.spp},
                        {"wall_s", t},
-                       {"gpu_s", p.gpu_s >= 0 ? nlohmann::json(p.gpu_s) : nlohmann::json(nullptr)},
+                       {"gpu_s", gpu_seconds(p.gpu_s)},
                        {"relmse", p.relmse},
                        {"relmse_excess", p.excess},
                        {"mape", p.mape},
-                       {"efficiency", p.excess > 0 && t > 0 ? nlohmann::json(1.0 / (p.excess * t))
-                                                            : nlohmann::json(nullptr)},
-                       {"rays", {{"camera", p.rays.camera},
-                                 {"extension", p.rays.extension},
-                                 {"shadow", p.rays.shadow}}},
-                       {"mrays_per_s", t > 0 ? nlohmann::json(1e-6 * double(p.rays.total()) / t)
-                                             : nlohmann::json(nullptr)}});
+                       {"efficiency", number_or_null(efficiency)},
+                       {"mrays_per_s", mrays_per_s(rays, nullptr, t)},
+                       {"rays", rays}});
     }
     j["points"] = pts;
     return j;

@@ -1,5 +1,6 @@
 #include "bench/markdown.h"
 
+#include "bench/result_json.h"
 #include "compare/text_file.h"
 
 #include <fmt/format.h>
@@ -25,19 +26,9 @@ std::string g3(double v) {
     return fmt::format("{:.3g}", v);
 }
 
-double total_rays(const json& rays) {
-    return rays["camera"].get<double>() + rays["extension"].get<double>() +
-           rays["shadow"].get<double>();
-}
-
-std::string label(const json& run) {
-    return run["backend"].get<std::string>() + "/" + run["mode"].get<std::string>();
-}
-
-bool has_section(const json& r, const char* s) {
-    for (const json& x : r["sections"])
-        if (x == s) return true;
-    return false;
+// Seconds as milliseconds, three significant digits, or a dash for null.
+std::string ms(const json& seconds) {
+    return seconds.is_number() ? g3(1e3 * seconds.get<double>()) : kDash;
 }
 
 std::string lights_text(const json& l) {
@@ -51,7 +42,7 @@ std::string facts(const json& r) {
     const json& s = r["settings"];
     std::string devices;
     for (const json& b : r["backends"])
-        devices += fmt::format("{}`{}`: {}", devices.empty() ? "" : "; ", label(b),
+        devices += fmt::format("{}`{}`: {}", devices.empty() ? "" : "; ", run_label(b),
                                b["device"].get<std::string>());
     const auto load = [](const json& l) {
         return fmt::format("{:.2f} / {:.2f} / {:.2f}", l[0].get<double>(), l[1].get<double>(),
@@ -105,18 +96,18 @@ std::string ladder_section(const json& r, const std::string& base) {
         for (const json& run : sc["ladder"]) {
             const json& p = run["points"].back();
             const double t = p["wall_s"];
-            const auto rate = [&](const char* k) { return g3(1e-6 * p["rays"][k].get<double>() / t); };
+            const auto rate = [&](const char* k) { return g3(mrays_per_s(p["rays"], k, t)); };
             const json& to = run["time_to_relmse"];
-            md += fmt::format(
-                "| {} | {} | {} | {} | {} | {} | {} | {} | {} / {} / {} | {} | {} |\n", label(run),
-                p["spp"].get<int>(), g3(t), g3(p["gpu_s"]), g3(p["relmse_excess"]), g3(p["mape"]),
-                g3(p["efficiency"]),
-                cpu_eff > 0 && p["efficiency"].is_number()
-                    ? g3(p["efficiency"].get<double>() / cpu_eff)
-                    : kDash,
-                rate("camera"), rate("extension"), rate("shadow"),
-                to["1e-2"].is_null() ? "not reached" : g3(to["1e-2"]),
-                to["1e-3"].is_null() ? "not reached" : g3(to["1e-3"]));
+            md +=
+                fmt::format("| {} | {} | {} | {} | {} | {} | {} | {} | {} / {} / {} | {} | {} |\n",
+                            run_label(run), p["spp"].get<int>(), g3(t), g3(p["gpu_s"]),
+                            g3(p["relmse_excess"]), g3(p["mape"]), g3(p["efficiency"]),
+                            cpu_eff > 0 && p["efficiency"].is_number()
+                                ? g3(p["efficiency"].get<double>() / cpu_eff)
+                                : kDash,
+                            rate("camera"), rate("extension"), rate("shadow"),
+                            to["1e-2"].is_null() ? "not reached" : g3(to["1e-2"]),
+                            to["1e-3"].is_null() ? "not reached" : g3(to["1e-3"]));
         }
         md += "\n";
     }
@@ -128,14 +119,16 @@ std::string sweep_block(const json& r, const std::string& backend, const char* r
                         const char* key, const char* key_name) {
     std::string head = fmt::format("| {} |", key_name), rule = "|---|";
     std::vector<const json*> runs;
-    for (const json& sc : r["scenes"])
-        for (const json& run : sc.value("table", json::array()))
-            if (label(run) == backend) {
+    for (const json& sc : r["scenes"]) {
+        if (!sc.contains("table")) continue;
+        for (const json& run : sc["table"]) // a reference into r: runs keeps pointers
+            if (run_label(run) == backend) {
                 const std::string n = sc["name"];
                 head += fmt::format(" {0} T [s] | {0} Mrays/s | {0} sec. rays/sample |", n);
                 rule += "---|---|---|";
                 runs.push_back(&run);
             }
+    }
     std::string md = head + "\n" + rule + "\n";
     const size_t n_rows = runs.empty() ? 0 : (*runs[0])[rows].size();
     for (size_t i = 0; i < n_rows; ++i) {
@@ -143,10 +136,8 @@ std::string sweep_block(const json& r, const std::string& backend, const char* r
         for (const json* run : runs) {
             const json& x = (*run)[rows][i];
             const double t = x["wall_s"], samples = x["samples"];
-            const double secondary =
-                x["rays"]["extension"].get<double>() + x["rays"]["shadow"].get<double>();
-            md += fmt::format(" {} | {} | {} |", g3(t), g3(1e-6 * total_rays(x["rays"]) / t),
-                              samples > 0 ? g3(secondary / samples) : kDash);
+            md += fmt::format(" {} | {} | {} |", g3(t), g3(mrays_per_s(x["rays"], nullptr, t)),
+                              samples > 0 ? g3(secondary_rays(x["rays"]) / samples) : kDash);
         }
         md += "\n";
     }
@@ -173,8 +164,8 @@ std::string table_section(const json& r) {
         uniq += fmt::format(" {} |", sc["unique_triangles"].get<uint64_t>());
         lights += fmt::format(" {} |", lights_text(sc["lights"]));
         for (const json& run : sc["table"])
-            if (std::find(backends.begin(), backends.end(), label(run)) == backends.end())
-                backends.push_back(label(run));
+            if (std::find(backends.begin(), backends.end(), run_label(run)) == backends.end())
+                backends.push_back(run_label(run));
     }
     md += head + "\n" + rule + "\n" + tri + "\n" + uniq + "\n" + lights + "\n";
     for (const std::string& b : backends) {
@@ -183,7 +174,7 @@ std::string table_section(const json& r) {
             if (!sc.contains("table")) continue;
             std::string cell = kDash;
             for (const json& run : sc["table"])
-                if (label(run) == b) {
+                if (run_label(run) == b) {
                     cell = g3(run["accel_bytes"].get<double>() / 1024.0);
                     for (const auto& [k, v] : run["extra"].items())
                         if (k.size() > 6 && k.compare(k.size() - 6, 6, "_bytes") == 0)
@@ -224,23 +215,22 @@ std::string peer_section(const json& r) {
         for (const json& row : rows) {
             const json& ours = row["ours"];
             const json& peer = row["peer"];
-            md += fmt::format(
-                "| {} | {}×{} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
-                sc["name"].get<std::string>(), sc["width"].get<int>(), sc["height"].get<int>(),
-                p["spp"].get<int>(), sc["max_depth"].get<int>(), row["threads"].get<int>(),
-                g3(1e3 * ours["time_per_spp_s"].get<double>()), g3(ours["mrays_per_s"]),
-                peer["time_per_spp_s"].is_number()
-                    ? g3(1e3 * peer["time_per_spp_s"].get<double>())
-                    : fmt::format("failed (exit {})", peer["exit_code"].get<int>()),
-                g3(peer["mrays_per_s_inferred"]), g3(row["speedup"]));
+            md += fmt::format("| {} | {}×{} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
+                              sc["name"].get<std::string>(), sc["width"].get<int>(),
+                              sc["height"].get<int>(), p["spp"].get<int>(),
+                              sc["max_depth"].get<int>(), row["threads"].get<int>(),
+                              ms(ours["time_per_spp_s"]), g3(ours["mrays_per_s"]),
+                              peer["exit_code"] == 0
+                                  ? ms(peer["time_per_spp_s"])
+                                  : fmt::format("failed (exit {})", peer["exit_code"].get<int>()),
+                              g3(peer["mrays_per_s_inferred"]), g3(row["speedup"]));
         }
         if (rows.size() >= 2) {
             const json &a = rows[0], &b = rows[rows.size() - 1];
             const auto ratio = [&](const char* who) {
                 const json &ta = a[who]["time_per_spp_s"], &tb = b[who]["time_per_spp_s"];
-                return ta.is_number() && tb.is_number()
-                           ? g3(ta.get<double>() / tb.get<double>())
-                           : std::string(kDash);
+                return ta.is_number() && tb.is_number() ? g3(ta.get<double>() / tb.get<double>())
+                                                        : std::string(kDash);
             };
             scaling += fmt::format("| {} | {} | {} |\n", sc["name"].get<std::string>(),
                                    ratio("ours"), ratio("peer"));
@@ -293,7 +283,10 @@ void merge_markdown_section(const std::string& path, const std::string& id,
     if (b != std::string::npos && e != std::string::npos && e > b)
         doc.replace(b, e + end.size() - b, block);
     else
-        doc += (doc.empty() || doc.back() == '\n' ? "\n" : "\n\n") + block;
+        doc += (doc.size() >= 2 && doc.compare(doc.size() - 2, 2, "\n\n") == 0 ? ""
+                : doc.empty() || doc.back() == '\n'                            ? "\n"
+                                                                               : "\n\n") +
+               block;
     write_text_file(path, doc);
 }
 

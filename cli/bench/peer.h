@@ -3,14 +3,14 @@
 // each thread count.
 //
 // Time per spp (one sample of every pixel): both programs are timed at 1 and at N samples per
-// pixel and the difference is divided by N - 1, which cancels what does not scale with the samples (the tutorial's
-// process start, OBJ parsing and BVH build; our build is outside the render time anyway).
-// Each is the best of kPeerRepeats runs. The tutorial does not count its rays: its rays/s is
-// inferred as our rays per spp divided by its time per spp, i.e. its speed in the rays
-// our renderer traces for the same image. It ends paths whose throughput drops below 0.01 and
-// sends one shadow ray per light per vertex, so its own ray count differs; the time per
-// spp is the number to compare.
-// Path length: our max depth D (scattering events) with Russian roulette off, the tutorial's
+// pixel and the difference is divided by N - 1, which cancels what does not scale with the samples
+// (the tutorial's process start, OBJ parsing and BVH build; our build is outside the render time
+// anyway). Each is the best of kPeerRepeats runs. The tutorial does not count its rays: its rays/s
+// is inferred as our rays per spp divided by its time per spp, i.e. its speed in the rays our
+// renderer traces for the same image. It ends paths whose throughput drops below 0.01 and sends one
+// shadow ray per light per vertex, so its own ray count differs; the time per spp is the number to
+// compare. Path length: our max depth D (scattering events) with Russian roulette off, the
+// tutorial's
 // --max-path-length D ("1 = primary + shadow"): both sum paths of up to D scattering events.
 #pragma once
 
@@ -30,14 +30,14 @@ constexpr int kPeerRepeats = 2;
 struct PeerRow {
     uint32_t threads = 0;
     double ours_low_s = 0, ours_high_s = 0; // render time at 1 and at N spp
-    double ours_rays_per_spp = 0; // over the whole image
+    double ours_rays_per_spp = 0;           // over the whole image
     double peer_low_s = 0, peer_high_s = 0; // process wall time at 1 and at N spp
     int peer_exit = 0;                      // non-zero: the tutorial failed (row unusable)
 };
 
 struct PeerRun {
     uint32_t spp = 0;
-    std::string obj; // the exported scene
+    std::string obj;                         // the exported scene
     std::vector<std::string> peer_arguments; // after the binary, for the N-spp run
     std::vector<PeerRow> rows;
 };

@@ -107,13 +107,15 @@ void write_obj(const FlatScene& s, const std::string& obj_path) {
         const bool normals = (mesh.flags & MESH_HAS_NORMALS) != 0u;
         for (uint32_t v = 0; v < mesh.vertex_count; ++v) {
             const vec3 p = s.positions[mesh.first_vertex + v];
-            obj << "v " << triple(vec3(dot(vec3(w[0]), p) + w[0].w, dot(vec3(w[1]), p) + w[1].w,
-                                       dot(vec3(w[2]), p) + w[2].w))
+            obj << "v "
+                << triple(vec3(dot(vec3(w[0]), p) + w[0].w, dot(vec3(w[1]), p) + w[1].w,
+                               dot(vec3(w[2]), p) + w[2].w))
                 << "\n";
             if (!normals) continue;
             // Normals map to world by the inverse transpose: n_j = sum_k to_object[k][j] n_k.
             const vec3 n = s.normals[mesh.first_vertex + v];
-            obj << "vn " << triple(normalize(n.x * vec3(o[0]) + n.y * vec3(o[1]) + n.z * vec3(o[2])))
+            obj << "vn "
+                << triple(normalize(n.x * vec3(o[0]) + n.y * vec3(o[1]) + n.z * vec3(o[2])))
                 << "\n";
         }
         obj << "usemtl m" << inst.material << "\n";

@@ -22,8 +22,10 @@ constexpr const char* kKeyAttribute = "twinpath:bench_key";
 std::string resolve_cache_dir(const std::string& option) {
     if (!option.empty()) return option;
     if (const char* env = std::getenv("TWINPATH_CACHE")) return env;
-    if (const char* xdg = std::getenv("XDG_CACHE_HOME")) return (fs::path(xdg) / "twinpath").string();
-    if (const char* home = std::getenv("HOME")) return (fs::path(home) / ".cache/twinpath").string();
+    if (const char* xdg = std::getenv("XDG_CACHE_HOME"))
+        return (fs::path(xdg) / "twinpath").string();
+    if (const char* home = std::getenv("HOME"))
+        return (fs::path(home) / ".cache/twinpath").string();
     return ".cache/twinpath";
 }
 

@@ -14,10 +14,10 @@ namespace tp::bench {
 
 struct Reference {
     RgbImage image;
-    std::string file;     // the cached OpenEXR
-    std::string key;      // <scene hash>-<renderer version>
-    bool cached = false;  // read from the cache rather than rendered now
-    double render_s = 0;  // how long the CPU took to render it (recorded in the file)
+    std::string file;    // the cached OpenEXR
+    std::string key;     // <scene hash>-<renderer version>
+    bool cached = false; // read from the cache rather than rendered now
+    double render_s = 0; // how long the CPU took to render it (recorded in the file)
     uint32_t spp = 0;
 };
 

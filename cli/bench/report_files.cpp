@@ -1,5 +1,6 @@
 #include "bench/report_files.h"
 
+#include "bench/result_json.h"
 #include "bench/svg_plot.h"
 #include "compare/text_file.h"
 
@@ -31,15 +32,6 @@ std::string row(std::initializer_list<json> fields) {
     return line + "\n";
 }
 
-// Rays of a kind per second, in millions; null without time.
-json mrays(const json& rays, const char* kind, double seconds) {
-    if (!(seconds > 0)) return nullptr;
-    const double n = kind ? rays[kind].get<double>()
-                          : rays["camera"].get<double>() + rays["extension"].get<double>() +
-                                rays["shadow"].get<double>();
-    return 1e-6 * n / seconds;
-}
-
 std::string ladder_csv(const json& result) {
     std::string csv = "scene,backend,mode,device,spp,wall_s,gpu_s,relmse,relmse_excess,mape,"
                       "efficiency,camera_rays,extension_rays,shadow_rays,camera_mrays_s,"
@@ -48,12 +40,12 @@ std::string ladder_csv(const json& result) {
         for (const json& run : sc.value("ladder", json::array()))
             for (const json& p : run["points"]) {
                 const double t = p["wall_s"];
-                csv += row({sc["name"], run["backend"], run["mode"], run["device"], p["spp"], t,
-                            p["gpu_s"], p["relmse"], p["relmse_excess"], p["mape"],
-                            p["efficiency"], p["rays"]["camera"], p["rays"]["extension"],
-                            p["rays"]["shadow"], mrays(p["rays"], "camera", t),
-                            mrays(p["rays"], "extension", t), mrays(p["rays"], "shadow", t),
-                            mrays(p["rays"], nullptr, t)});
+                csv += row(
+                    {sc["name"], run["backend"], run["mode"], run["device"], p["spp"], t,
+                     p["gpu_s"], p["relmse"], p["relmse_excess"], p["mape"], p["efficiency"],
+                     p["rays"]["camera"], p["rays"]["extension"], p["rays"]["shadow"],
+                     mrays_per_s(p["rays"], "camera", t), mrays_per_s(p["rays"], "extension", t),
+                     mrays_per_s(p["rays"], "shadow", t), mrays_per_s(p["rays"], nullptr, t)});
             }
     return csv;
 }
@@ -66,14 +58,13 @@ std::string table_csv(const json& result) {
             for (const char* sweep : {"depth_rows", "spp_rows"})
                 for (const json& r : run[sweep]) {
                     const double t = r["wall_s"], samples = r["samples"];
-                    const double secondary = r["rays"]["extension"].get<double>() +
-                                             r["rays"]["shadow"].get<double>();
-                    csv += row({sc["name"], run["backend"], run["mode"], run["device"],
-                                run["accel_bytes"], sweep == std::string("depth_rows") ? "depth" : "spp",
-                                r["depth"], r["spp"], t, r["gpu_s"], r["rays"]["camera"],
-                                r["rays"]["extension"], r["rays"]["shadow"],
-                                mrays(r["rays"], nullptr, t),
-                                samples > 0 ? json(secondary / samples) : json(nullptr)});
+                    const double secondary = secondary_rays(r["rays"]);
+                    csv += row(
+                        {sc["name"], run["backend"], run["mode"], run["device"], run["accel_bytes"],
+                         sweep == std::string("depth_rows") ? "depth" : "spp", r["depth"], r["spp"],
+                         t, r["gpu_s"], r["rays"]["camera"], r["rays"]["extension"],
+                         r["rays"]["shadow"], mrays_per_s(r["rays"], nullptr, t),
+                         samples > 0 ? json(secondary / samples) : json(nullptr)});
                 }
     return csv;
 }
@@ -85,10 +76,10 @@ std::string peer_csv(const json& result) {
         if (!sc.contains("peer")) continue;
         const json& peer = sc["peer"];
         for (const json& r : peer["rows"])
-            csv += row({sc["name"], sc["width"], sc["height"], peer["spp"], sc["max_depth"],
-                        r["threads"], r["ours"]["time_per_spp_s"], r["ours"]["mrays_per_s"],
-                        r["peer"]["time_per_spp_s"], r["peer"]["mrays_per_s_inferred"],
-                        r["speedup"]});
+            csv +=
+                row({sc["name"], sc["width"], sc["height"], peer["spp"], sc["max_depth"],
+                     r["threads"], r["ours"]["time_per_spp_s"], r["ours"]["mrays_per_s"],
+                     r["peer"]["time_per_spp_s"], r["peer"]["mrays_per_s_inferred"], r["speedup"]});
     }
     return csv;
 }
@@ -96,13 +87,12 @@ std::string peer_csv(const json& result) {
 } // namespace
 
 void write_csv_files(const json& result, const std::string& dir) {
-    const json& sections = result["sections"];
-    const auto has = [&](const char* s) {
-        return std::find(sections.begin(), sections.end(), s) != sections.end();
-    };
-    if (has("ladder")) write_text_file((fs::path(dir) / "ladder.csv").string(), ladder_csv(result));
-    if (has("table")) write_text_file((fs::path(dir) / "table.csv").string(), table_csv(result));
-    if (has("peer")) write_text_file((fs::path(dir) / "peer.csv").string(), peer_csv(result));
+    if (has_section(result, "ladder"))
+        write_text_file((fs::path(dir) / "ladder.csv").string(), ladder_csv(result));
+    if (has_section(result, "table"))
+        write_text_file((fs::path(dir) / "table.csv").string(), table_csv(result));
+    if (has_section(result, "peer"))
+        write_text_file((fs::path(dir) / "peer.csv").string(), peer_csv(result));
 }
 
 void write_plots(json& result, const std::string& dir) {
@@ -116,7 +106,7 @@ void write_plots(json& result, const std::string& dir) {
         plot.guides = {1e-2, 1e-3};
         for (const json& run : sc["ladder"]) {
             PlotSeries s;
-            s.label = run["backend"].get<std::string>() + "/" + run["mode"].get<std::string>();
+            s.label = run_label(run);
             for (const json& p : run["points"])
                 s.points.emplace_back(p["wall_s"].get<double>(), p["relmse_excess"].get<double>());
             plot.series.push_back(s);

@@ -28,8 +28,8 @@ constexpr Box kTeapot{{-3.0, 0.0, -2.0}, {3.434, 3.15, 2.0}};
 // An object that scales the mesh by `s`, turns it by `degrees` about +Y and stands it on the
 // floor (y = 0) with its bounding-box centre above (x, z). M = T R S (docs/scene-format.md),
 // so the translation is the target point minus R S of the box's bottom centre.
-json placed(const std::string& mesh, const std::string& material, const Box& b, double s,
-            double x, double z, double degrees = 0) {
+json placed(const std::string& mesh, const std::string& material, const Box& b, double s, double x,
+            double z, double degrees = 0) {
     const double cx = 0.5 * (b.lo[0] + b.hi[0]), cz = 0.5 * (b.lo[2] + b.hi[2]);
     const double a = degrees * 3.14159265358979323846 / 180.0, c = std::cos(a), n = std::sin(a);
     // R_y(a) (cx, 0, cz) = (c cx + n cz, 0, -n cx + c cz)
@@ -81,7 +81,8 @@ json monkeys(const std::string& assets) {
                       {"m3", phong(v3(0.6, 0.5, 0.1), 0.3, 50)},
                       {"m4", phong(v3(0.4, 0.4, 0.4), 0.5, 10000)},
                       {"m5", phong(v3(0.7, 0.7, 0.7))}};
-    s["meshes"] = {{"suzanne", obj_mesh(assets, "suzanne/suzanne.obj")}, {"floor", {{"type", "quad"}}}};
+    s["meshes"] = {{"suzanne", obj_mesh(assets, "suzanne/suzanne.obj")},
+                   {"floor", {{"type", "quad"}}}};
     s["objects"] = json::array({floor_object(3.0)});
     for (int i = 0; i < 6; ++i)
         s["objects"].push_back(placed("suzanne", "m" + std::to_string(i), kSuzanne, 0.35,
@@ -98,8 +99,7 @@ json bunny(const std::string& assets) {
     json s;
     s["camera"] = camera(v3(0.4, 0.9, 2.0), v3(0, 0.55, 0), 40);
     s["render"] = {{"max_depth", 8}, {"min_depth", 3}};
-    s["materials"] = {{"floor", phong(v3(0.5, 0.5, 0.5))},
-                      {"bunny", phong(v3(0.75, 0.72, 0.68))}};
+    s["materials"] = {{"floor", phong(v3(0.5, 0.5, 0.5))}, {"bunny", phong(v3(0.75, 0.72, 0.68))}};
     s["meshes"] = {{"bunny", obj_mesh(assets, "bunny/stanford-bunny.obj")},
                    {"floor", {{"type", "quad"}}}};
     s["objects"] = json::array({floor_object(4.0), placed("bunny", "bunny", kBunny, 8.0, 0, 0)});
@@ -154,16 +154,15 @@ json rtxon(const std::string& assets) {
                        {"colors", json::array({v3(0.92, 0.91, 0.88), v3(0.35, 0.33, 0.36)})}}}};
     json floor = phong(v3(0.85, 0.85, 0.85), 0.1, 200);
     floor["map_Kd"] = "marble";
-    s["materials"] = {
-        {"floor", floor},
-        {"chrome", {{"type", "mirror"}, {"Ks", v3(0.9, 0.9, 0.92)}}},
-        {"ice", {{"type", "dielectric"}, {"Ni", 1.31}, {"Tf", v3(0.85, 0.95, 1.0)}}}};
+    s["materials"] = {{"floor", floor},
+                      {"chrome", {{"type", "mirror"}, {"Ks", v3(0.9, 0.9, 0.92)}}},
+                      {"ice", {{"type", "dielectric"}, {"Ni", 1.31}, {"Tf", v3(0.85, 0.95, 1.0)}}}};
     s["meshes"] = {{"teapot", obj_mesh(assets, "teapot/teapot.obj")},
                    {"bunny", obj_mesh(assets, "bunny/stanford-bunny.obj")},
                    {"floor", {{"type", "quad"}}}};
-    s["objects"] = json::array({floor_object(2.0),
-                                placed("teapot", "chrome", kTeapot, 0.12, -0.45, 0, 30),
-                                placed("bunny", "ice", kBunny, 3.0, 0.45, 0.05)});
+    s["objects"] =
+        json::array({floor_object(2.0), placed("teapot", "chrome", kTeapot, 0.12, -0.45, 0, 30),
+                     placed("bunny", "ice", kBunny, 3.0, 0.45, 0.05)});
     s["lights"] = json::array({sun(v3(-0.5, -1, -0.35), 3.0)});
     s["environment"] = sky(0.35, 0.4, 0.5);
     return s;
@@ -178,7 +177,9 @@ const std::vector<CatalogueEntry>& scene_catalogue() {
          "thesis Monkeys: six Suzannes, two point lights, environment",
          {"suzanne/suzanne.obj"},
          monkeys},
-        {"bunny", "thesis Bunny: the Stanford bunny, sun and sky", {"bunny/stanford-bunny.obj"},
+        {"bunny",
+         "thesis Bunny: the Stanford bunny, sun and sky",
+         {"bunny/stanford-bunny.obj"},
          bunny},
         {"buddhas",
          "thesis Happy Buddhas: four unique copies of the mesh",

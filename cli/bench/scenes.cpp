@@ -45,8 +45,7 @@ std::optional<Scene> load_bench_scene(const std::string& name, const std::string
         const fs::path path = fs::path(scene_dir) / (name + ".json");
         {
             std::ofstream out(path);
-            out << e.generate(fs::absolute(assets_dir).lexically_normal().string()).dump(2)
-                << "\n";
+            out << e.generate(fs::absolute(assets_dir).lexically_normal().string()).dump(2) << "\n";
             if (!out) runtime_error("cannot write {}", path.string());
         }
         Scene s = load_scene(path.string(), warnings);
@@ -60,8 +59,9 @@ std::optional<Scene> load_bench_scene(const std::string& name, const std::string
         for (const std::string& w : warnings) fmt::print(stderr, "twinpath: warning: {}\n", w);
         return s;
     }
-    input_error("--scenes: '{}' is neither a benchmark scene ({}) nor a bundled scene or .json/.obj file", name,
-                catalogue_names());
+    input_error(
+        "--scenes: '{}' is neither a benchmark scene ({}) nor a bundled scene or .json/.obj file",
+        name, catalogue_names());
 }
 
 } // namespace tp::bench

@@ -19,11 +19,20 @@ std::string xml_escape(const std::string& s) {
     std::string out;
     for (char c : s) {
         switch (c) {
-        case '&': out += "&amp;"; break;
-        case '<': out += "&lt;"; break;
-        case '>': out += "&gt;"; break;
-        case '"': out += "&quot;"; break;
-        default: out += c;
+        case '&':
+            out += "&amp;";
+            break;
+        case '<':
+            out += "&lt;";
+            break;
+        case '>':
+            out += "&gt;";
+            break;
+        case '"':
+            out += "&quot;";
+            break;
+        default:
+            out += c;
         }
     }
     return out;
@@ -61,13 +70,13 @@ std::string svg_loglog(const LogLogPlot& plot) {
     const auto X = [&](double x) { return kLeft + (std::log10(x) - dx.lo) / (dx.hi - dx.lo) * pw; };
     const auto Y = [&](double y) { return kTop + (dy.hi - std::log10(y)) / (dy.hi - dy.lo) * ph; };
 
-    std::string svg = fmt::format(
-        "<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
-        "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" "
-        "viewBox=\"0 0 {0} {1}\" font-family=\"sans-serif\" font-size=\"12\">\n"
-        "<rect width=\"{0}\" height=\"{1}\" fill=\"white\"/>\n"
-        "<text x=\"{2}\" y=\"24\" font-size=\"15\">{3}</text>\n",
-        kWidth, kHeight, kLeft, xml_escape(plot.title));
+    std::string svg =
+        fmt::format("<?xml version=\"1.0\" encoding=\"UTF-8\"?>\n"
+                    "<svg xmlns=\"http://www.w3.org/2000/svg\" width=\"{0}\" height=\"{1}\" "
+                    "viewBox=\"0 0 {0} {1}\" font-family=\"sans-serif\" font-size=\"12\">\n"
+                    "<rect width=\"{0}\" height=\"{1}\" fill=\"white\"/>\n"
+                    "<text x=\"{2}\" y=\"24\" font-size=\"15\">{3}</text>\n",
+                    kWidth, kHeight, kLeft, xml_escape(plot.title));
     for (int k = dx.lo; k <= dx.hi; ++k) {
         const double x = X(std::pow(10.0, k));
         svg += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1}\" x2=\"{0:.1f}\" y2=\"{2}\" "
@@ -85,8 +94,8 @@ std::string svg_loglog(const LogLogPlot& plot) {
     svg += fmt::format("<rect x=\"{}\" y=\"{}\" width=\"{}\" height=\"{}\" fill=\"none\" "
                        "stroke=\"black\"/>\n",
                        kLeft, kTop, pw, ph);
-    svg += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n",
-                       kLeft + pw / 2, kHeight - 16, xml_escape(plot.x_label));
+    svg += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", kLeft + pw / 2,
+                       kHeight - 16, xml_escape(plot.x_label));
     svg += fmt::format("<text transform=\"translate(22 {}) rotate(-90)\" "
                        "text-anchor=\"middle\">{}</text>\n",
                        kTop + ph / 2, xml_escape(plot.y_label));

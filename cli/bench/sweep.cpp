@@ -1,5 +1,7 @@
 #include "bench/sweep.h"
 
+#include "bench/result_json.h"
+
 #include <algorithm>
 
 namespace tp::bench {
@@ -22,11 +24,9 @@ nlohmann::json rows_json(const std::vector<SweepRow>& rows) {
         a.push_back({{"depth", r.depth},
                      {"spp", r.spp},
                      {"wall_s", r.wall_s},
-                     {"gpu_s", r.gpu_s >= 0 ? nlohmann::json(r.gpu_s) : nlohmann::json(nullptr)},
+                     {"gpu_s", gpu_seconds(r.gpu_s)},
                      {"samples", r.samples},
-                     {"rays", {{"camera", r.rays.camera},
-                               {"extension", r.rays.extension},
-                               {"shadow", r.rays.shadow}}}});
+                     {"rays", rays_json(r.rays)}});
     return a;
 }
 
@@ -48,7 +48,8 @@ SweepRun run_sweep(const FlatScene& scene, const Backend& backend, const BenchOp
         opt.seed = options.seed;
         opt.threads = options.threads;
         const double weight = double(spp) * depth;
-        if (progress) opt.progress = [&, weight](double f) { progress((done + f * weight) / total); };
+        if (progress)
+            opt.progress = [&, weight](double f) { progress((done + f * weight) / total); };
         const RenderResult r = render_on(backend, s, opt, options.device);
         done += weight;
         run.accel_bytes = r.stats.accel_bytes;

@@ -1,0 +1,49 @@
+#include "bench/result_json.h"
+
+#include <cmath>
+
+using nlohmann::json;
+
+namespace tp::bench {
+
+json number_or_null(double v) {
+    return std::isfinite(v) ? json(v) : json(nullptr);
+}
+
+json number_or_null(const std::optional<double>& v) {
+    return v ? number_or_null(*v) : json(nullptr);
+}
+
+json gpu_seconds(double gpu_s) {
+    return gpu_s >= 0 ? number_or_null(gpu_s) : json(nullptr);
+}
+
+json rays_json(const RayCounts& rays) {
+    return {{"camera", rays.camera}, {"extension", rays.extension}, {"shadow", rays.shadow}};
+}
+
+double total_rays(const json& rays) {
+    return rays["camera"].get<double>() + rays["extension"].get<double>() +
+           rays["shadow"].get<double>();
+}
+
+double secondary_rays(const json& rays) {
+    return rays["extension"].get<double>() + rays["shadow"].get<double>();
+}
+
+json mrays_per_s(const json& rays, const char* kind, double seconds) {
+    if (!(seconds > 0)) return nullptr;
+    return 1e-6 * (kind ? rays[kind].get<double>() : total_rays(rays)) / seconds;
+}
+
+bool has_section(const json& result, const char* name) {
+    for (const json& s : result["sections"])
+        if (s == name) return true;
+    return false;
+}
+
+std::string run_label(const json& run) {
+    return run["backend"].get<std::string>() + "/" + run["mode"].get<std::string>();
+}
+
+} // namespace tp::bench

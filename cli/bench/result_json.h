@@ -1,0 +1,41 @@
+// Small pieces of the bench result's JSON (cmd_bench.cpp), shared by the sections that write it
+// (ladder.cpp, sweep.cpp) and the files that read it back (report_files.cpp, markdown.cpp).
+#pragma once
+
+#include "render/stats.h"
+
+#include <nlohmann/json.hpp>
+
+#include <optional>
+#include <string>
+
+namespace tp::bench {
+
+// A measurement that may be absent: null in JSON (and an empty CSV cell, a dash in markdown)
+// when not finite, so that "not measured" never reads as a number.
+nlohmann::json number_or_null(double v);
+nlohmann::json number_or_null(const std::optional<double>& v);
+
+// GPU time is negative when the backend has no timestamp queries (RenderStats::gpu_time_s).
+nlohmann::json gpu_seconds(double gpu_s);
+
+// {"camera": n, "extension": n, "shadow": n}
+nlohmann::json rays_json(const RayCounts& rays);
+
+// Sum of the three kinds of rays_json.
+double total_rays(const nlohmann::json& rays);
+
+// Extension + shadow rays: the rays after the camera ray (thesis Table 5.3's secondary rays).
+double secondary_rays(const nlohmann::json& rays);
+
+// Rays of one kind ("camera", "extension", "shadow"; nullptr: all) per second, in millions;
+// null without a positive time.
+nlohmann::json mrays_per_s(const nlohmann::json& rays, const char* kind, double seconds);
+
+// Whether the result holds a section ("ladder", "table", "peer").
+bool has_section(const nlohmann::json& result, const char* name);
+
+// "cpu/embree", "vulkan/compute": the backend and mode of a ladder or table run.
+std::string run_label(const nlohmann::json& run);
+
+} // namespace tp::bench
