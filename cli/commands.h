@@ -17,5 +17,6 @@ Subcommand add_render_command(CLI::App& app);
 Subcommand add_compare_command(CLI::App& app);
 Subcommand add_info_command(CLI::App& app);
 Subcommand add_bench_command(CLI::App& app);
+Subcommand add_pathdiff_command(CLI::App& app);
 
 } // namespace tp

@@ -16,6 +16,7 @@ int main(int argc, char** argv) {
         tp::add_compare_command(app),
         tp::add_info_command(app),
         tp::add_bench_command(app),
+        tp::add_pathdiff_command(app),
     };
     try {
         app.parse(argc, argv);

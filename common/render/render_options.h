@@ -2,6 +2,7 @@
 // every backend.
 #pragma once
 
+#include "render/debug_output.h"
 #include "render/film.h"
 #include "render/stats.h"
 
@@ -25,6 +26,8 @@ struct RenderOptions {
     // counts above the render's spp are ignored.
     std::vector<uint32_t> checkpoints;
     std::function<void(const RenderResult& snapshot)> on_checkpoint;
+    // Path logs, AOVs and debug views (render/debug_output.h, docs/debugging.md).
+    DebugRequest debug;
 
     // The first checkpoint above `done`, or `spp` when there is none.
     uint32_t next_stop(uint32_t done, uint32_t spp) const {
@@ -42,6 +45,7 @@ struct RenderOptions {
 struct RenderResult {
     Film film;
     RenderStats stats;
+    DebugOutput debug; // what options.debug asked for
 };
 
 } // namespace tp

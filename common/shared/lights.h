@@ -64,7 +64,11 @@ inline vec3 triangle_light_normal(Light l) {
 // Area measure to solid angle: p_omega = p_A d^2 / cos(theta_l), with p_A = 1 / area.
 inline float triangle_light_pdf(float area, float dist, float cos_light) {
     if (cos_light <= 0.0f || area <= 0.0f) return 0.0f;
+#ifdef TP_BUG_LIGHT_PDF // planted bug of the debugging tests (tests/gpu/debug_workflow_test.cpp)
+    return 2.0f * dist * dist / (cos_light * area);
+#else
     return dist * dist / (cos_light * area);
+#endif
 }
 
 inline LightSample sample_triangle_light(Light l, vec3 p, vec2 u) {

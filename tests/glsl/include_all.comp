@@ -12,6 +12,7 @@
 #include "shared/math.h"
 #include "shared/offset.h"
 #include "shared/path.h"
+#include "shared/path_log.h"
 #include "shared/rng.h"
 #include "shared/roulette.h"
 #include "shared/sampling.h"
