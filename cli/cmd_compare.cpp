@@ -9,10 +9,13 @@
 #include "compare/report.h"
 #include "compare/summary.h"
 #include "compare/text_file.h"
+#include "image/png_io.h"
 #include "util/error.h"
 
 #include <fmt/core.h>
 
+#include <array>
+#include <filesystem>
 #include <memory>
 
 namespace tp {
@@ -37,6 +40,17 @@ int run_exact(const CompareArgs& a) {
     const ExactResult r = exact_compare(a.files[0], read_exr(a.files[0]), a.files[1],
                                         read_exr(a.files[1]), a.tolerance);
     write_json(a.json, exact_json(r));
+    if (!a.report.empty()) {
+        // The mismatches as a picture: black equal, yellow on a silhouette, red elsewhere.
+        std::filesystem::create_directories(a.report);
+        std::vector<uint8_t> rgb;
+        for (uint8_t m : r.mask)
+            for (uint8_t v : m == 2   ? std::array<uint8_t, 3>{255, 0, 0}
+                             : m == 1 ? std::array<uint8_t, 3>{255, 220, 0}
+                                      : std::array<uint8_t, 3>{0, 0, 0})
+                rgb.push_back(v);
+        write_png(a.report + "/exact_mismatches.png", r.width, r.height, rgb);
+    }
     fmt::print("{}\n", exact_verdict_line(r));
     return r.identical() ? 0 : 1;
 }

@@ -1,8 +1,12 @@
-// `compare --exact`: pixel-by-pixel equality of deterministic layers. This is the simple
-// version issue 3 asks for: every channel the two files share is compared, a pixel mismatches
+// `compare --exact`: pixel-by-pixel equality of deterministic layers (docs/compare.md, "Exact
+// mode"). Without AOV layers every channel the two files share is compared, a pixel mismatches
 // when any channel differs by more than the tolerance (NaN equals NaN, inf equals inf of the
-// same sign). The AOV-aware comparison of issue 7 (silhouette pixels, per-layer rules) will
-// build on it.
+// same sign). When both files carry the AOV layers of `render --aov` (id.instance among them),
+// only the AOV layers are compared (R, G, B are Monte Carlo estimates), under per-layer rules:
+// ids exactly, albedo, normal and depth within max(tolerance, 1e-4 max(1, |a|, |b|)); and a
+// mismatch on a silhouette pixel (one whose instance id differs from a 4-neighbour's in either
+// image: the two ray-triangle tests may disagree there by one rounding) is counted and listed
+// apart, and does not make the images different.
 #pragma once
 
 #include "image/exr_io.h"
@@ -23,6 +27,12 @@ struct ExactResult {
     std::map<std::string, size_t> mismatches; // per compared channel
     size_t mismatching_pixels = 0;            // pixels with any compared channel off
     double max_abs_difference = 0;            // over finite pairs
+    bool aov_mode = false;                    // AOV layers in both: compared as above
+    size_t silhouette_pixels = 0;             // AOV mode: pixels on an instance boundary
+    size_t silhouette_mismatches = 0;         // AOV mode: mismatches there (not counted above)
+    std::vector<std::pair<int, int>> silhouette_examples; // up to 20 (x, y)
+    std::vector<std::pair<int, int>> mismatch_examples;   // up to 20 (x, y), off silhouettes
+    std::vector<uint8_t> mask; // per pixel: 0 equal, 1 silhouette mismatch, 2 mismatch
     bool identical() const { return mismatching_pixels == 0; }
 };
 
