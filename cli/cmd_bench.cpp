@@ -22,6 +22,7 @@
 #include "bench/report_files.h"
 #include "bench/scene_hash.h"
 #include "bench/scenes.h"
+#include "bench/specialization.h"
 #include "bench/sweep.h"
 #include "compare/text_file.h"
 #include "scene/flatten.h"
@@ -155,6 +156,20 @@ void table(BenchRun& run, const std::string& name, const FlatScene& flat, json& 
     }
 }
 
+// --specialization (bench/specialization.h): scene-specialized against all-features loops.
+void specialization(BenchRun& run, const std::string& name, const FlatScene& flat, json& sj) {
+    sj["specialization"] = json::array();
+    for (const Backend& b : run.backends) {
+        const std::string what = fmt::format("{} {} specialization", name, b.label());
+        guarded(run, what, [&] {
+            ProgressBar bar(run.next_label(what));
+            const json row = run_specialization(flat, b, run.o, bar.callback());
+            sj["specialization"].push_back(row);
+            fmt::print("bench: {}: all/specialized = {:.3f}\n", what, row["ratio"].get<double>());
+        });
+    }
+}
+
 void peer(BenchRun& run, const std::string& name, Scene scene, json& sj) {
     const std::string what = fmt::format("{} peer", name);
     std::string reason;
@@ -183,7 +198,7 @@ json result_header(const BenchRun& run) {
     json sections = json::array();
     std::string names;
     for (const auto& [on, name] :
-         {std::pair{o.ladder, "ladder"}, {o.table, "table"}, {o.peer, "peer"}})
+         {std::pair{o.ladder, "ladder"}, {o.table, "table"}, {o.peer, "peer"}, {o.specialization, "specialization"}})
         if (on) {
             sections.push_back(name);
             names += (names.empty() ? "" : ", ") + std::string(name);
@@ -220,6 +235,8 @@ json result_header(const BenchRun& run) {
           {"spp", o.table_spp},
           {"fixed_spp", o.table_fixed_spp},
           {"fixed_depth", o.table_fixed_depth}}},
+        {"spec_spp", o.spec_spp},
+        {"spec_rounds", o.spec_rounds},
         {"peer", {{"spp", o.peer_spp}, {"threads", o.peer_threads}, {"binary", o.peer_binary}}},
         {"assets", run.assets_dir},
         {"cache", run.cache_dir}};
@@ -250,13 +267,13 @@ void write_outputs(json& r, const BenchOptions& o) {
 
 int run_bench(BenchRun& run) {
     BenchOptions& o = run.o;
-    if (!o.ladder && !o.table && !o.peer) o.ladder = true;
+    if (!o.ladder && !o.table && !o.peer && !o.specialization) o.ladder = true;
     validate(o);
     std::sort(o.table_spp.begin(), o.table_spp.end());
     o.table_spp.erase(std::unique(o.table_spp.begin(), o.table_spp.end()), o.table_spp.end());
     run.cache_dir = resolve_cache_dir(o.cache_dir);
     run.assets_dir = resolve_assets_dir(o.assets_dir);
-    if (o.ladder || o.table) {
+    if (o.ladder || o.table || o.specialization) {
         std::vector<Skip> unavailable;
         run.backends = expand_backends(o.backends, o.device, o.threads, unavailable);
         for (const Skip& s : unavailable) skip(run, s.what, s.reason);
@@ -277,7 +294,8 @@ int run_bench(BenchRun& run) {
     }
     if (scenes.empty()) input_error("bench: none of the scenes could be loaded (above)");
     const int per_scene = (o.ladder ? 1 + int(run.backends.size()) : 0) +
-                          (o.table ? int(run.backends.size()) : 0) + (o.peer ? 1 : 0);
+                          (o.table ? int(run.backends.size()) : 0) + (o.peer ? 1 : 0) +
+                          (o.specialization ? int(run.backends.size()) : 0);
     run.steps = per_scene * int(scenes.size());
 
     r["scenes"] = json::array();
@@ -296,6 +314,7 @@ int run_bench(BenchRun& run) {
         if (o.ladder) ladder(run, name, flat, sj);
         if (o.table) table(run, name, flat, sj);
         if (o.peer) peer(run, name, scene, sj);
+        if (o.specialization) specialization(run, name, flat, sj);
         r["scenes"].push_back(sj);
     }
 
@@ -362,6 +381,14 @@ Subcommand add_bench_command(CLI::App& app) {
     c->add_flag("--ladder", o.ladder, "Error against time for each backend/mode (the default)");
     c->add_flag("--table", o.table, "Rays/s and time over depth and spp (thesis Table 5.3)");
     c->add_flag("--peer", o.peer, "Time per spp next to Embree's path tracer tutorial");
+    c->add_flag("--specialization", o.specialization,
+                "Time per spp: scene-specialized path loop against --features all");
+    c->add_option("--spec-spp", o.spec_spp, "Specialization: spp of each timed render")
+        ->check(CLI::Range(1u, 1u << 20))
+        ->capture_default_str();
+    c->add_option("--spec-rounds", o.spec_rounds, "Specialization: alternating rounds per variant")
+        ->check(CLI::Range(1u, 100u))
+        ->capture_default_str();
     c->add_option("--scenes", o.scenes, "Scenes: " + catalogue_names() + ", or .json/.obj files")
         ->delimiter(',')
         ->capture_default_str();

@@ -1,6 +1,11 @@
 // twinpath info [--json]: what this build can do and which devices it sees.
+// twinpath info SCENE [--json]: what the scene holds and which features it uses (issue 9:
+// the features the renderers specialize their path loop to).
 #include "commands.h"
 
+#include "scene/features.h"
+#include "scene/flatten.h"
+#include "scene/load.h"
 #include "util/error.h"
 #include "vulkan_rt/vulkan_renderer.h"
 
@@ -37,14 +42,47 @@ nlohmann::json vulkan_json() {
     return v;
 }
 
+// The scene's size, lights and features.
+int scene_info(const std::string& path, bool json_out) {
+    std::vector<std::string> warnings;
+    const Scene scene = load_scene(path, warnings);
+    for (const std::string& w : warnings) fmt::print(stderr, "twinpath: warning: {}\n", w);
+    const FlatScene f = flatten(scene);
+    const SceneFeatures features = analyze_features(f);
+    nlohmann::json j;
+    j["scene"] = scene.path;
+    j["instances"] = f.instances.size();
+    j["meshes"] = f.meshes.size();
+    j["materials"] = f.materials.size();
+    j["textures"] = f.textures.size();
+    j["triangles"] = f.instanced_triangles;
+    j["unique_triangles"] = f.unique_triangles;
+    j["lights"] = f.lights.size();
+    j["features"] = features.names();
+    j["feature_mask"] = features.mask;
+    if (json_out) {
+        fmt::print("{}\n", j.dump(2));
+        return 0;
+    }
+    fmt::print("{}\n  {} instances of {} meshes, {} triangles ({} stored), {} materials, {} "
+               "textures, {} lights\n  features: {}\n",
+               scene.path, f.instances.size(), f.meshes.size(), f.instanced_triangles,
+               f.unique_triangles, f.materials.size(), f.textures.size(), f.lights.size(),
+               features.summary());
+    return 0;
+}
+
 } // namespace
 
 Subcommand add_info_command(CLI::App& app) {
     auto json_out = std::make_shared<bool>(false);
-    CLI::App* c =
-        app.add_subcommand("info", "Show the build, the CPU backend and the Vulkan devices");
+    auto scene = std::make_shared<std::string>();
+    CLI::App* c = app.add_subcommand(
+        "info", "Show the build, the CPU backend and the Vulkan devices, or a scene's features");
+    c->add_option("scene", *scene, "Scene file or bundled name: show its contents and features");
     c->add_flag("--json", *json_out, "Machine-readable output");
-    return {c, [json_out] {
+    return {c, [json_out, scene] {
+                if (!scene->empty()) return scene_info(*scene, *json_out);
                 nlohmann::json j;
                 j["version"] = TWINPATH_VERSION;
                 j["backends"]["cpu"] = {{"embree", RTC_VERSION_STRING}};

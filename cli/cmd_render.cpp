@@ -33,6 +33,7 @@ struct RenderArgs {
     std::string eye, target, up;
     std::optional<float> fov;
     std::string stats, png;
+    std::string features = "scene"; // --features: scene (specialized) or all
 };
 
 ExrImage render_image(const RenderResult& r) {
@@ -94,6 +95,7 @@ int run_render(const RenderArgs& a) {
     opt.seed = a.seed;
     opt.time_limit_s = a.time_limit;
     opt.threads = a.threads;
+    opt.all_features = a.features == "all";
     opt.progress = bar.callback();
 
     RenderResult result;
@@ -152,6 +154,9 @@ Subcommand add_render_command(CLI::App& app) {
         ->check(CLI::Range(1e-3f, 179.0f));
     c->add_option("--stats", a->stats, "Write render statistics as JSON");
     c->add_option("--png", a->png, "Write a tone-mapped sRGB PNG preview");
+    c->add_option("--features", a->features,
+                  "Path loop: scene (specialized to the scene's features) or all (every feature)")
+        ->check(CLI::IsMember({"scene", "all"}));
     return {c, [a] { return run_render(*a); }};
 }
 

@@ -2,6 +2,7 @@
 
 #include "cpu_ref/embree_accel.h"
 #include "cpu_ref/integrator.h"
+#include "scene/features.h"
 #include "shared/math.h"
 
 #include <tbb/blocked_range.h>
@@ -56,7 +57,11 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
     const EmbreeAccel accel(seeded);
     st.build_time_s = seconds_since(t_build);
     st.accel_bytes = accel.memory_bytes();
-    const CpuIntegrator integrator(seeded, accel);
+    const SceneFeatures features = analyze_features(seeded);
+    st.scene_features = features.names();
+    st.feature_mask = render_feature_mask(seeded, options.all_features);
+    st.feature_variant = options.all_features ? "all" : "scene";
+    const CpuIntegrator integrator(seeded, accel, st.feature_mask);
 
     result.film = Film(W, H);
     st.width = W;

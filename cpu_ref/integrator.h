@@ -5,20 +5,38 @@
 #include "cpu_ref/embree_accel.h"
 #include "cpu_ref/scene_access.h"
 #include "render/stats.h"
+#include "shared/features.h"
+
+#include <array>
+#include <utility>
 
 namespace tp {
 
 class CpuIntegrator {
   public:
-    CpuIntegrator(const FlatScene& scene, const EmbreeAccel& accel)
-        : access_(scene), accel_(accel) {}
+    // `features`: the feature mask the path loop is specialized to (shared/features.h); it
+    // must include every feature of the scene (FEATURES_ALL always does).
+    CpuIntegrator(const FlatScene& scene, const EmbreeAccel& accel,
+                  uint32_t features = FEATURES_ALL);
 
     // Radiance estimate of sample `sample_index` of pixel (x, y); rays are counted into `rays`.
-    vec3 radiance(uint32_t x, uint32_t y, uint32_t sample_index, RayCounts& rays) const;
+    vec3 radiance(uint32_t x, uint32_t y, uint32_t sample_index, RayCounts& rays) const {
+        return (this->*loop_)(x, y, sample_index, rays);
+    }
 
   private:
+    // The path loop compiled for the feature bits `Fixed` (a subset of kFixedFeatures); the
+    // other bits come from features_ at run time.
+    template <uint32_t Fixed>
+    vec3 radiance_for(uint32_t x, uint32_t y, uint32_t sample_index, RayCounts& rays) const;
+    using Loop = vec3 (CpuIntegrator::*)(uint32_t, uint32_t, uint32_t, RayCounts&) const;
+    template <size_t... I>
+    static std::array<Loop, sizeof...(I)> make_loops(std::index_sequence<I...>);
+
     SceneAccess access_;
     const EmbreeAccel& accel_;
+    uint32_t features_;
+    Loop loop_;
 };
 
 } // namespace tp

@@ -4,6 +4,7 @@
 
 #include "cpu_ref/embree_accel.h"
 #include "scene/flatten.h"
+#include "shared/features.h"
 #include "shared/lights.h"
 #include "shared/surface.h"
 #include "shared/texture.h"
@@ -16,8 +17,11 @@ class SceneAccess {
 
     const FlatScene& scene() const { return s_; }
 
-    // World-space point, normals and uv of a hit.
-    SurfacePoint surface(const Hit& h) const {
+    // Every method takes the render's feature mask (shared/features.h): what the scene cannot
+    // use is not read.
+
+    // World-space point, normals and uv of a hit (uv only with textures, its one use).
+    SurfacePoint surface(const Hit& h, uint32_t features = FEATURES_ALL) const {
         const Instance& inst = s_.instances[h.instance];
         const MeshInfo& m = s_.meshes[inst.mesh];
         const uvec3 t = s_.triangles[m.first_triangle + h.primitive];
@@ -27,7 +31,7 @@ class SceneAccess {
         if (m.flags & MESH_HAS_NORMALS)
             surface_set_shading_normal(sp, inst, s_.normals[base + t.x], s_.normals[base + t.y],
                                        s_.normals[base + t.z], h.bary);
-        if (m.flags & MESH_HAS_UVS)
+        if (feature_on(features, FEATURE_TEXTURES) && (m.flags & MESH_HAS_UVS))
             sp.uv = barycentric_mix2(s_.uvs[base + t.x], s_.uvs[base + t.y], s_.uvs[base + t.z],
                                      h.bary);
         return sp;
@@ -41,9 +45,10 @@ class SceneAccess {
     }
 
     // The instance's material with its diffuse texture applied at uv.
-    Material material(uint32_t instance, vec2 uv) const {
+    Material material(uint32_t instance, vec2 uv, uint32_t features = FEATURES_ALL) const {
         Material m = s_.material_of(instance);
-        if (m.kd_texture != NO_TEXTURE) m.kd *= texture(m.kd_texture, uv_to_image(uv), false);
+        if (feature_on(features, FEATURE_TEXTURES) && m.kd_texture != NO_TEXTURE)
+            m.kd *= texture(m.kd_texture, uv_to_image(uv), false);
         return m;
     }
 
@@ -51,17 +56,19 @@ class SceneAccess {
     float light_selection_pdf(uint32_t i) const { return s_.light_table[i].pdf; }
 
     // Radiance arriving from the environment along direction d (unit, world space).
-    vec3 environment_radiance(vec3 d) const {
+    vec3 environment_radiance(vec3 d, uint32_t features = FEATURES_ALL) const {
         const Light& env = s_.lights[s_.params.env_light];
-        if (s_.params.env_texture == NO_TEXTURE) return env.value;
+        if (!feature_on(features, FEATURE_ENV_MAP) || s_.params.env_texture == NO_TEXTURE)
+            return env.value;
         return env.value * texture(s_.params.env_texture,
                                    environment_map_coords(d, s_.params.env_rotation), true);
     }
 
     // Solid-angle density with which light sampling picks direction d from the environment,
     // given that the environment was chosen.
-    float environment_pdf(vec3 d) const {
-        if (s_.params.env_texture == NO_TEXTURE) return INV_FOUR_PI;
+    float environment_pdf(vec3 d, uint32_t features = FEATURES_ALL) const {
+        if (!feature_on(features, FEATURE_ENV_MAP) || s_.params.env_texture == NO_TEXTURE)
+            return INV_FOUR_PI;
         if (s_.env_table.empty()) return 0.0f;
         const TextureInfo& info = s_.textures[size_t(s_.params.env_texture)];
         const vec2 st = environment_map_coords(d, s_.params.env_rotation);
@@ -72,10 +79,12 @@ class SceneAccess {
 
     // Samples light `i` from point p; the environment map's pixel is drawn with the 32 random
     // bits env_slot_bits and the number env_coin.
-    LightSample sample(uint32_t i, vec3 p, vec2 u, uint32_t env_slot_bits, float env_coin) const {
+    LightSample sample(uint32_t i, vec3 p, vec2 u, uint32_t env_slot_bits, float env_coin,
+                       uint32_t features = FEATURES_ALL) const {
         const Light& l = s_.lights[i];
-        if (l.type != LIGHT_ENVIRONMENT || s_.params.env_texture == NO_TEXTURE)
-            return sample_light(l, p, u);
+        if (!feature_on(features, FEATURE_ENV_MAP) || l.type != LIGHT_ENVIRONMENT ||
+            s_.params.env_texture == NO_TEXTURE)
+            return sample_light_in(features, l, p, u);
         if (s_.env_table.empty()) return light_sample_none();
         const TextureInfo& info = s_.textures[size_t(s_.params.env_texture)];
         const uint32_t slot = alias_slot_from_bits(env_slot_bits, uint32_t(s_.env_table.size()));
@@ -83,7 +92,7 @@ class SceneAccess {
         const uint32_t pixel = alias_resolve(slot, e.prob, e.alias, env_coin);
         LightSample ls = sample_environment_map(pixel, s_.env_table[pixel].pdf, info.width,
                                                 info.height, s_.params.env_rotation, u);
-        if (ls.pdf > 0.0f) ls.radiance = environment_radiance(ls.wi);
+        if (ls.pdf > 0.0f) ls.radiance = environment_radiance(ls.wi, features);
         return ls;
     }
 

@@ -36,7 +36,7 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
     for (uint bounce = 0u;; ++bounce) {
         TraceHit hit;
         if (!trace_closest(ray, hit)) {
-            if (params.env_light != NO_INDEX) {
+            if (features_environment(scene_features) && params.env_light != NO_INDEX) {
                 float light_pdf = scene_light_selection_pdf(params.env_light) *
                                   scene_environment_pdf(ray.dir);
                 L += T * scene_environment_radiance(ray.dir) *
@@ -51,7 +51,8 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
 
         // 1. Emission, front face only.
         float cos_emit = dot(sp.ng, wo);
-        if (!is_black(mat.ke) && cos_emit > 0.0f) {
+        if (feature_on(scene_features, FEATURE_EMISSIVE_TRIANGLES) && !is_black(mat.ke) &&
+            cos_emit > 0.0f) {
             float light_pdf = 0.0f;
             if (light_offset != NO_INDEX) {
                 uint li = light_offset + hit.primitive;
@@ -63,10 +64,12 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
 
         // 2. The maximum number of scattering events.
         if (bounce >= params.max_depth) break;
-        if (mat.type != MATERIAL_DIELECTRIC) surface_face_viewer(sp, wo);
+        if (!feature_on(scene_features, FEATURE_DIELECTRIC) || mat.type != MATERIAL_DIELECTRIC)
+            surface_face_viewer(sp, wo);
 
         // 3. Next-event estimation.
-        if (!material_is_delta(mat) && params.light_count > 0u) {
+        if (features_sample_lights(scene_features) && !material_is_delta_in(scene_features, mat) &&
+            params.light_count > 0u) {
             uint slot = alias_slot_from_bits(rng_bounce_bits(key, bounce, RNG_LIGHT_SLOT),
                                              params.light_count);
             AliasEntry e = light_table[slot];
@@ -77,12 +80,13 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
                 scene_sample_light(li, sp.p, u, rng_bounce_bits(key, bounce, RNG_ENV_SLOT),
                                    rng_bounce(key, bounce, RNG_ENV_COIN));
             if (ls.pdf > 0.0f && dot(ls.wi, sp.ng) > 0.0f) {
-                vec3 f = bsdf_eval(mat, sp.ns, wo, ls.wi);
+                vec3 f = bsdf_eval_in(scene_features, mat, sp.ns, wo, ls.wi);
                 if (!is_black(f) && !is_black(ls.radiance)) {
                     float light_pdf = sel_pdf * ls.pdf;
                     vec3 contrib = T * f * (dot(sp.ns, ls.wi) / light_pdf) * ls.radiance;
-                    if (!ls.delta)
-                        contrib *= power_heuristic(light_pdf, bsdf_pdf(mat, sp.ns, wo, ls.wi));
+                    if (features_mis(scene_features) && !ls.delta)
+                        contrib *= power_heuristic(light_pdf,
+                                                   bsdf_pdf_in(scene_features, mat, sp.ns, wo, ls.wi));
                     ++rays.shadow;
                     if (!trace_occluded(shadow_ray(sp.p, sp.ng, ls, lights[li]))) L += contrib;
                 }
@@ -90,8 +94,8 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
         }
 
         // 4. Scattering.
-        BsdfSample bs = bsdf_sample(
-            mat, sp.ns, wo, rng_bounce(key, bounce, RNG_LOBE),
+        BsdfSample bs = bsdf_sample_in(
+            scene_features, mat, sp.ns, wo, rng_bounce(key, bounce, RNG_LOBE),
             vec2(rng_bounce(key, bounce, RNG_DIR_U), rng_bounce(key, bounce, RNG_DIR_V)));
         if (bs.lobe == LOBE_NONE || !scatter_is_consistent(sp.ng, wo, bs.wi, bs.lobe)) break;
         T *= bs.weight;

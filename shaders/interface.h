@@ -35,6 +35,9 @@ const uint BINDING_ACCUM = 15u;      // PixelAccum[width * height]
 const uint BINDING_COUNTERS = 16u;   // uint[COUNTER_WORDS]
 const uint BINDING_COUNT = 17u;
 
+// ---- specialization constants (shaders/features.glsl) ---------------------------------------
+const uint SPEC_SCENE_FEATURES = 0u; // uint: the FEATURE_* mask the path loop is compiled for
+
 // ---- push constants of one dispatch ----------------------------------------------------------
 // The dispatch covers rows [row_begin, row_end) of the image, every column, and samples
 // [sample_begin, sample_begin + sample_count) of each of those pixels.

@@ -4,12 +4,16 @@
 #define TP_SHADERS_SCENE_ACCESS_GLSL
 
 #include "bindings.glsl"
+#include "features.glsl"
 #include "shared/lights.h"
 #include "shared/surface.h"
 #include "shared/texture.h"
 #include "trace_hit.glsl"
 
-// World-space point, normals and uv of a hit.
+// Every read below is restricted to the pipeline's feature mask (features.glsl, scene_features):
+// what the scene cannot use is compiled out.
+
+// World-space point, normals and uv of a hit (uv only with textures, its one use).
 SurfacePoint scene_surface(TraceHit h) {
     Instance inst = instances[h.instance];
     MeshInfo m = meshes[inst.mesh];
@@ -20,7 +24,7 @@ SurfacePoint scene_surface(TraceHit h) {
     if ((m.flags & MESH_HAS_NORMALS) != 0u)
         surface_set_shading_normal(sp, inst, normals[base + t.x], normals[base + t.y],
                                    normals[base + t.z], h.bary);
-    if ((m.flags & MESH_HAS_UVS) != 0u)
+    if (feature_on(scene_features, FEATURE_TEXTURES) && (m.flags & MESH_HAS_UVS) != 0u)
         sp.uv = barycentric_mix2(uvs[base + t.x], uvs[base + t.y], uvs[base + t.z], h.bary);
     return sp;
 }
@@ -36,7 +40,7 @@ vec3 scene_texture(int index, vec2 st, bool clamp_t) {
 // The instance's material with its diffuse texture applied at uv.
 Material scene_material(uint instance, vec2 uv) {
     Material m = materials[instances[instance].material];
-    if (m.kd_texture != NO_TEXTURE) m.kd *= scene_texture(m.kd_texture, uv_to_image(uv), false);
+    if (feature_on(scene_features, FEATURE_TEXTURES) && m.kd_texture != NO_TEXTURE) m.kd *= scene_texture(m.kd_texture, uv_to_image(uv), false);
     return m;
 }
 
@@ -47,7 +51,8 @@ float scene_light_selection_pdf(uint i) {
 // Radiance arriving from the environment along direction d (unit, world space).
 vec3 scene_environment_radiance(vec3 d) {
     Light env = lights[params.env_light];
-    if (params.env_texture == NO_TEXTURE) return env.value;
+    if (!feature_on(scene_features, FEATURE_ENV_MAP) || params.env_texture == NO_TEXTURE)
+        return env.value;
     return env.value *
            scene_texture(params.env_texture, environment_map_coords(d, params.env_rotation), true);
 }
@@ -55,7 +60,8 @@ vec3 scene_environment_radiance(vec3 d) {
 // Solid-angle density with which light sampling picks direction d from the environment,
 // given that the environment was chosen.
 float scene_environment_pdf(vec3 d) {
-    if (params.env_texture == NO_TEXTURE) return INV_FOUR_PI;
+    if (!feature_on(scene_features, FEATURE_ENV_MAP) || params.env_texture == NO_TEXTURE)
+        return INV_FOUR_PI;
     if (batch.env_table_size == 0u) return 0.0f;
     TextureInfo info = textures[params.env_texture];
     vec2 st = environment_map_coords(d, params.env_rotation);
@@ -67,8 +73,9 @@ float scene_environment_pdf(vec3 d) {
 // env_slot_bits and the number env_coin.
 LightSample scene_sample_light(uint i, vec3 p, vec2 u, uint env_slot_bits, float env_coin) {
     Light l = lights[i];
-    if (l.type != LIGHT_ENVIRONMENT || params.env_texture == NO_TEXTURE)
-        return sample_light(l, p, u);
+    if (!feature_on(scene_features, FEATURE_ENV_MAP) || l.type != LIGHT_ENVIRONMENT ||
+        params.env_texture == NO_TEXTURE)
+        return sample_light_in(scene_features, l, p, u);
     if (batch.env_table_size == 0u) return light_sample_none();
     TextureInfo info = textures[params.env_texture];
     uint slot = alias_slot_from_bits(env_slot_bits, batch.env_table_size);

@@ -1,6 +1,11 @@
 #include "vulkan_rt/compute_program.h"
 
+#include "shared/features.h"
+#include "vulkan_rt/specialization.h"
 #include "vulkan_rt/vk_error.h"
+
+#include <chrono>
+#include <memory>
 
 #include <vector>
 
@@ -17,6 +22,11 @@ std::vector<BindingSlot> storage_slots(uint32_t count) {
 
 ComputeProgram::ComputeProgram(const VulkanContext& ctx, const uint32_t* spirv, size_t spirv_bytes,
                                uint32_t binding_count, uint32_t push_bytes)
+    : ComputeProgram(ctx, spirv, spirv_bytes, binding_count, push_bytes, FEATURES_ALL, false) {}
+
+ComputeProgram::ComputeProgram(const VulkanContext& ctx, const uint32_t* spirv, size_t spirv_bytes,
+                               uint32_t binding_count, uint32_t push_bytes, uint32_t features,
+                               bool cached)
     : device_(ctx.device()),
       bindings_(ctx, storage_slots(binding_count), VK_SHADER_STAGE_COMPUTE_BIT, push_bytes) {
     VkShaderModuleCreateInfo mi{};
@@ -32,9 +42,27 @@ ComputeProgram::ComputeProgram(const VulkanContext& ctx, const uint32_t* spirv, 
     ci.stage.module = module;
     ci.stage.pName = "main";
     ci.layout = bindings_.layout();
-    const VkResult r = vkCreateComputePipelines(device_, VK_NULL_HANDLE, 1, &ci, nullptr, &pipeline_);
+    // A shader without the constant ignores it (Vulkan allows unused map entries).
+    const FeatureSpecialization spec(features);
+    ci.stage.pSpecializationInfo = &spec.info;
+    std::unique_ptr<PipelineCache> cache;
+    try {
+        if (cached) cache = std::make_unique<PipelineCache>(ctx, fnv1a64(spirv, spirv_bytes));
+    } catch (...) {
+        vkDestroyShaderModule(device_, module, nullptr);
+        throw;
+    }
+    const auto t0 = std::chrono::steady_clock::now();
+    const VkResult r = vkCreateComputePipelines(device_, cache ? cache->handle() : VK_NULL_HANDLE,
+                                                1, &ci, nullptr, &pipeline_);
     vkDestroyShaderModule(device_, module, nullptr);
     vk_check(r, "compiling a compute pipeline");
+    if (cache) {
+        cache->use().create_s =
+            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        cache->save();
+        cache_use_ = cache->use();
+    }
 }
 
 ComputeProgram::~ComputeProgram() {

@@ -1,11 +1,14 @@
 // A compute pipeline from embedded SPIR-V whose descriptor set 0 is `binding_count` storage
 // buffers (bindings 0..n-1) and whose push constants are one block of `push_bytes` bytes.
+// Render shaders get the scene's feature mask as a specialization constant (features.glsl) and
+// are compiled through the on-disk pipeline cache (pipeline_cache.h).
 #pragma once
 
 #include "vulkan_rt/barriers.h"
 #include "vulkan_rt/buffer.h"
 #include "vulkan_rt/context.h"
 #include "vulkan_rt/pipeline_bindings.h"
+#include "vulkan_rt/pipeline_cache.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -16,6 +19,10 @@ class ComputeProgram {
   public:
     ComputeProgram(const VulkanContext& ctx, const uint32_t* spirv, size_t spirv_bytes,
                    uint32_t binding_count, uint32_t push_bytes);
+    // A render shader: specialized to `features` (shared/features.h) and, when `cached`,
+    // compiled through the pipeline cache on disk.
+    ComputeProgram(const VulkanContext& ctx, const uint32_t* spirv, size_t spirv_bytes,
+                   uint32_t binding_count, uint32_t push_bytes, uint32_t features, bool cached);
     ~ComputeProgram();
     ComputeProgram(const ComputeProgram&) = delete;
     ComputeProgram& operator=(const ComputeProgram&) = delete;
@@ -27,10 +34,14 @@ class ComputeProgram {
     void record_dispatch(VkCommandBuffer cmd, const void* push, uint32_t groups_x,
                          uint32_t groups_y, uint32_t groups_z) const;
 
+    // The pipeline cache's part in creating this pipeline (empty file: not cached).
+    const PipelineCacheUse& cache_use() const { return cache_use_; }
+
   private:
     VkDevice device_;
     PipelineBindings bindings_;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
+    PipelineCacheUse cache_use_;
 };
 
 } // namespace tp

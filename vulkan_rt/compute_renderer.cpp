@@ -2,6 +2,7 @@
 
 #include "vulkan_rt/bvh_builder.h"
 #include "vulkan_rt/compute_program.h"
+#include "scene/features.h"
 #include "vulkan_rt/render_loop.h"
 #include "vulkan_rt/scene_buffers.h"
 
@@ -16,15 +17,17 @@ namespace {
 // The compute shader over the BVH arrays it owns (slots 13 and 14).
 class ComputeTracer : public Tracer {
   public:
-    ComputeTracer(const VulkanContext& ctx, const BvhBuild& bvh)
+    // `features`: the feature mask the render shader is specialized to (shared/features.h).
+    ComputeTracer(const VulkanContext& ctx, const BvhBuild& bvh, uint32_t features)
         : bvh_(upload_bvh(ctx, bvh)), top_root_(bvh.top_root),
           program_(ctx, tp_spirv_render_compute, sizeof(tp_spirv_render_compute), BINDING_COUNT,
-                   sizeof(BatchParams)) {
+                   sizeof(BatchParams), features, true) {
         program_.bind(BINDING_BVH_NODES, bvh_.nodes);
         program_.bind(BINDING_BVH_TRIS, bvh_.triangles);
     }
 
     const char* mode() const override { return "compute"; }
+    const PipelineCacheUse& cache_use() const { return program_.cache_use(); }
     VkPipelineStageFlags shader_stage() const override {
         return VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
     }
@@ -61,8 +64,10 @@ RenderResult render_compute(const VulkanContext& ctx, const FlatScene& scene,
     accel.build_time_s = seconds_since(t_build);
     accel.bytes = bvh.bytes();
     const SceneBuffers sb =
-        upload_scene(ctx, scene, seeded_params(scene, options.seed), bvh.mesh_roots, 0);
-    ComputeTracer tracer(ctx, bvh);
+        upload_scene(ctx, scene, seeded_params(scene, options.seed), bvh.mesh_roots, 0,
+                     render_feature_mask(scene, options.all_features));
+    ComputeTracer tracer(ctx, bvh, render_feature_mask(scene, options.all_features));
+    add_cache_stats(tracer.cache_use(), accel.extra);
     return render_batches(ctx, scene, options, sb, tracer, accel);
 }
 

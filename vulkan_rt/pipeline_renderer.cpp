@@ -1,5 +1,6 @@
 #include "vulkan_rt/pipeline_renderer.h"
 
+#include "scene/features.h"
 #include "vulkan_rt/accel_structures.h"
 #include "vulkan_rt/render_loop.h"
 #include "vulkan_rt/rt_functions.h"
@@ -14,12 +15,14 @@ namespace {
 // The ray-tracing pipeline over the TLAS it binds to slot 13.
 class PipelineTracer : public Tracer {
   public:
-    PipelineTracer(const VulkanContext& ctx, const RtFunctions& rt, VkAccelerationStructureKHR tlas)
-        : program_(ctx, rt, sizeof(BatchParams)) {
+    PipelineTracer(const VulkanContext& ctx, const RtFunctions& rt, VkAccelerationStructureKHR tlas,
+                   uint32_t features)
+        : program_(ctx, rt, sizeof(BatchParams), features) {
         program_.bind_tlas(tlas);
     }
 
     const char* mode() const override { return "pipeline"; }
+    const PipelineCacheUse& cache_use() const { return program_.cache_use(); }
     VkPipelineStageFlags shader_stage() const override {
         return VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR;
     }
@@ -39,7 +42,8 @@ RenderResult render_pipeline(const VulkanContext& ctx, const FlatScene& scene,
                              const RenderOptions& options) {
     const RtFunctions rt(ctx.device());
     const SceneBuffers sb =
-        upload_scene(ctx, scene, seeded_params(scene, options.seed), {}, kAccelInputUsage);
+        upload_scene(ctx, scene, seeded_params(scene, options.seed), {}, kAccelInputUsage,
+                     render_feature_mask(scene, options.all_features));
     const auto t_build = std::chrono::steady_clock::now();
     const AccelStructures as(ctx, rt, scene, sb);
     AccelStats accel;
@@ -48,7 +52,8 @@ RenderResult render_pipeline(const VulkanContext& ctx, const FlatScene& scene,
     accel.bytes = as.bytes();
     accel.extra["blas_count"] = std::to_string(as.blas_count());
     accel.extra["blas_bytes_uncompacted"] = std::to_string(as.uncompacted_blas_bytes());
-    PipelineTracer tracer(ctx, rt, as.tlas());
+    PipelineTracer tracer(ctx, rt, as.tlas(), render_feature_mask(scene, options.all_features));
+    add_cache_stats(tracer.cache_use(), accel.extra);
     return render_batches(ctx, scene, options, sb, tracer, accel);
 }
 

@@ -3,7 +3,10 @@
 #include "shaders/interface.h"
 #include "shaders/rt_interface.h"
 #include "vulkan_rt/sbt_layout.h"
+#include "vulkan_rt/specialization.h"
 #include "vulkan_rt/vk_error.h"
+
+#include <chrono>
 
 #include <vector>
 
@@ -53,8 +56,9 @@ VkStridedDeviceAddressRegionKHR region(VkDeviceAddress table, const SbtRegion& r
 
 } // namespace
 
-RtProgram::RtProgram(const VulkanContext& ctx, const RtFunctions& rt, uint32_t push_bytes)
-    : ctx_(ctx), rt_(rt),
+RtProgram::RtProgram(const VulkanContext& ctx, const RtFunctions& rt, uint32_t push_bytes,
+                     uint32_t features)
+    : ctx_(ctx), rt_(rt), features_(features),
       bindings_(ctx, pipeline_slots(), VK_SHADER_STAGE_RAYGEN_BIT_KHR, push_bytes) {
     create_pipeline();
     try {
@@ -81,6 +85,11 @@ void RtProgram::create_pipeline() {
             for (VkShaderModule x : m) vkDestroyShaderModule(d, x, nullptr);
         }
     } guard{device, modules};
+    // The path loop lives in the ray-generation shader: it alone is specialized to the scene's
+    // features. One closest-hit group serves every material (it only reports the hit), so
+    // there is no per-material hit group to leave out (docs/gpu.md).
+    const FeatureSpecialization spec(features_);
+    uint64_t shader_hash = fnv1a64(nullptr, 0);
     for (uint32_t i = 0; i < kGroupCount; ++i) {
         VkShaderModuleCreateInfo mi{};
         mi.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
@@ -89,12 +98,14 @@ void RtProgram::create_pipeline() {
         VkShaderModule module = VK_NULL_HANDLE;
         vk_check(vkCreateShaderModule(device, &mi, nullptr, &module), "loading a shader");
         modules.push_back(module);
+        shader_hash = fnv1a64(mi.pCode, mi.codeSize, shader_hash);
 
         VkPipelineShaderStageCreateInfo st{};
         st.sType = VK_STRUCTURE_TYPE_PIPELINE_SHADER_STAGE_CREATE_INFO;
         st.stage = kStages[i].stage;
         st.module = module;
         st.pName = "main";
+        if (kStages[i].stage == VK_SHADER_STAGE_RAYGEN_BIT_KHR) st.pSpecializationInfo = &spec.info;
         stages.push_back(st);
 
         // Ray generation and miss shaders are "general" groups; the closest hit is a
@@ -119,9 +130,15 @@ void RtProgram::create_pipeline() {
     // Only the ray-generation shader traces rays; hit and miss shaders never do.
     ci.maxPipelineRayRecursionDepth = 1;
     ci.layout = bindings_.layout();
-    vk_check(rt_.vkCreateRayTracingPipelinesKHR(device, VK_NULL_HANDLE, VK_NULL_HANDLE, 1, &ci,
+    PipelineCache cache(ctx_, shader_hash);
+    const auto t0 = std::chrono::steady_clock::now();
+    vk_check(rt_.vkCreateRayTracingPipelinesKHR(device, VK_NULL_HANDLE, cache.handle(), 1, &ci,
                                                 nullptr, &pipeline_),
              "compiling the ray-tracing pipeline");
+    cache.use().create_s =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    cache.save();
+    cache_use_ = cache.use();
 }
 
 void RtProgram::create_binding_table() {

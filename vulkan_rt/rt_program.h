@@ -7,13 +7,17 @@
 #include "vulkan_rt/buffer.h"
 #include "vulkan_rt/context.h"
 #include "vulkan_rt/pipeline_bindings.h"
+#include "vulkan_rt/pipeline_cache.h"
 #include "vulkan_rt/rt_functions.h"
+#include "shared/features.h"
 
 namespace tp {
 
 class RtProgram {
   public:
-    RtProgram(const VulkanContext& ctx, const RtFunctions& rt, uint32_t push_bytes);
+    // `features`: the ray-generation shader's specialization (shaders/features.glsl).
+    RtProgram(const VulkanContext& ctx, const RtFunctions& rt, uint32_t push_bytes,
+              uint32_t features = FEATURES_ALL);
     ~RtProgram();
     RtProgram(const RtProgram&) = delete;
     RtProgram& operator=(const RtProgram&) = delete;
@@ -27,12 +31,17 @@ class RtProgram {
     void record_trace(VkCommandBuffer cmd, const void* push, uint32_t width,
                       uint32_t height) const;
 
+    // The pipeline cache's part in creating the pipeline (pipeline_cache.h).
+    const PipelineCacheUse& cache_use() const { return cache_use_; }
+
   private:
     void create_pipeline();
     void create_binding_table();
 
     const VulkanContext& ctx_;
     const RtFunctions& rt_;
+    uint32_t features_;
+    PipelineCacheUse cache_use_;
     PipelineBindings bindings_;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
     Buffer sbt_;

@@ -4,7 +4,7 @@ namespace tp {
 
 SceneBuffers upload_scene(const VulkanContext& ctx, const FlatScene& scene,
                           const RenderParams& params, const std::vector<uint32_t>& mesh_bvh_roots,
-                          VkBufferUsageFlags geometry_usage) {
+                          VkBufferUsageFlags geometry_usage, uint32_t features) {
     bool normals = false, uvs = false;
     for (const MeshInfo& m : scene.meshes) {
         normals = normals || (m.flags & MESH_HAS_NORMALS);
@@ -30,14 +30,17 @@ SceneBuffers upload_scene(const VulkanContext& ctx, const FlatScene& scene,
     put(BINDING_POSITIONS, scene.positions.data(), scene.positions.size() * sizeof(vec3),
         storage | geometry_usage);
     put_if(BINDING_NORMALS, normals, scene.normals);
-    put_if(BINDING_UVS, uvs, scene.uvs);
+    // The shaders read uvs only to look up a diffuse texture (scene_access.glsl).
+    const bool textures = feature_on(features, FEATURE_TEXTURES);
+    put_if(BINDING_UVS, uvs && textures, scene.uvs);
     put(BINDING_TRIANGLES, scene.triangles.data(), scene.triangles.size() * sizeof(uvec3),
         storage | geometry_usage);
     put_if(BINDING_LIGHTS, true, scene.lights);
     put_if(BINDING_LIGHT_TABLE, true, scene.light_table);
-    put_if(BINDING_TEXTURES, true, scene.textures);
-    put_if(BINDING_TEXELS, true, scene.texels);
-    put_if(BINDING_ENV_TABLE, true, scene.env_table);
+    const bool env_map = feature_on(features, FEATURE_ENV_MAP);
+    put_if(BINDING_TEXTURES, textures || env_map, scene.textures);
+    put_if(BINDING_TEXELS, textures || env_map, scene.texels);
+    put_if(BINDING_ENV_TABLE, env_map, scene.env_table);
     up.flush();
     return sb;
 }

@@ -1,13 +1,16 @@
 // The scene on the device: FlatScene's arrays uploaded as they are (the shared structs have the
 // same bytes on both sides, shared/types.h). A feature the scene does not use (vertex normals,
 // uvs, textures, an environment map, lights) gets a 16-byte placeholder buffer instead of its
-// array, because the descriptor set always has every binding. The acceleration structure's
+// array, because the descriptor set always has every binding. Arrays only a feature outside the
+// render's feature mask reads (shared/features.h) are not uploaded either: uvs without
+// textures, texels without textures or an environment map. The acceleration structure's
 // slots belong to the mode: the BVH arrays of compute mode (upload_bvh) or the TLAS of
 // pipeline mode (accel_structures.h).
 #pragma once
 
 #include "scene/flatten.h"
 #include "shaders/interface.h"
+#include "shared/features.h"
 #include "vulkan_rt/buffer.h"
 #include "vulkan_rt/bvh_builder.h"
 
@@ -26,7 +29,7 @@ struct SceneBuffers {
 // the position and triangle buffers (pipeline mode: acceleration-structure build input).
 SceneBuffers upload_scene(const VulkanContext& ctx, const FlatScene& scene,
                           const RenderParams& params, const std::vector<uint32_t>& mesh_bvh_roots,
-                          VkBufferUsageFlags geometry_usage);
+                          VkBufferUsageFlags geometry_usage, uint32_t features = FEATURES_ALL);
 
 // Compute mode's BVH arrays, for slots BINDING_BVH_NODES and BINDING_BVH_TRIS.
 struct BvhBuffers {

@@ -1,5 +1,6 @@
 #include "vulkan_rt/vulkan_renderer.h"
 
+#include "scene/features.h"
 #include "util/error.h"
 #include "vulkan_rt/compute_renderer.h"
 #include "vulkan_rt/context.h"
@@ -21,6 +22,9 @@ RenderResult render_vulkan(const FlatScene& scene, const RenderOptions& options,
     const VulkanContext ctx(vk.device, vk.mode);
     RenderResult r = ctx.mode() == "pipeline" ? render_pipeline(ctx, scene, options)
                                               : render_compute(ctx, scene, options);
+    r.stats.scene_features = analyze_features(scene).names();
+    r.stats.feature_mask = render_feature_mask(scene, options.all_features);
+    r.stats.feature_variant = options.all_features ? "all" : "scene";
     r.stats.extra["vk_mode_requested"] = vk.mode;
     r.stats.extra["driver"] = ctx.info().driver;
     r.stats.extra["validation"] = ctx.instance().validation_enabled() ? "on" : "off";

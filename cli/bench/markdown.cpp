@@ -1,3 +1,4 @@
+#include "bench/specialization.h"
 #include "bench/markdown.h"
 
 #include "bench/result_json.h"
@@ -255,6 +256,7 @@ std::string markdown_section(const json& r, const std::string& base) {
     if (has_section(r, "ladder")) md += ladder_section(r, base);
     if (has_section(r, "table")) md += table_section(r);
     if (has_section(r, "peer")) md += peer_section(r);
+    if (has_section(r, "specialization")) md += specialization_section(r);
     if (!r["skipped"].empty()) {
         md += "Skipped:\n\n";
         for (const json& s : r["skipped"])

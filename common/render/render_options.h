@@ -18,6 +18,9 @@ struct RenderOptions {
     uint32_t seed = 0;
     double time_limit_s = 0; // 0: none; otherwise stop after the pass that crosses it
     uint32_t threads = 0;    // CPU threads; 0: all cores
+    // `--features all`: render with the path loop that has every feature compiled in instead
+    // of the one specialized to the scene's features (scene/features.h), for comparisons.
+    bool all_features = false;
     // Called after every pass with the fraction of samples done; may be empty.
     std::function<void(double fraction)> progress;
     // Sample counts at which a snapshot is wanted: a benchmark ladder renders once and reads

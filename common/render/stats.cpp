@@ -30,6 +30,8 @@ void write_stats_json(const std::string& path, const RenderStats& s) {
     j["samples"] = s.samples;
     j["nan_samples"] = s.nan_samples;
     j["accel_bytes"] = s.accel_bytes;
+    j["features"] = {
+        {"scene", s.scene_features}, {"variant", s.feature_variant}, {"mask", s.feature_mask}};
     for (const auto& [k, v] : s.extra) j["extra"][k] = v;
     std::ofstream out(path);
     if (!out) runtime_error("cannot write {}", path);

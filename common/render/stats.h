@@ -5,6 +5,7 @@
 #include <cstdint>
 #include <map>
 #include <string>
+#include <vector>
 
 namespace tp {
 
@@ -37,6 +38,11 @@ struct RenderStats {
     uint64_t samples = 0;
     uint64_t nan_samples = 0; // NaN/Inf samples, dropped from the film
     uint64_t accel_bytes = 0; // BVH / acceleration structure memory
+    // Scene features (scene/features.h): what the scene uses, and the variant of the path loop
+    // that rendered it ("scene": specialized to those features; "all": every feature compiled in).
+    std::vector<std::string> scene_features;
+    std::string feature_variant;
+    uint32_t feature_mask = 0;
     std::map<std::string, std::string> extra;
 
     double rays_per_second() const {

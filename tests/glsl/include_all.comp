@@ -6,6 +6,7 @@
 
 #include "shared/brdf.h"
 #include "shared/camera.h"
+#include "shared/features.h"
 #include "shared/intersect.h"
 #include "shared/lang.h"
 #include "shared/lights.h"

@@ -1,0 +1,75 @@
+#include "scene/features.h"
+
+#include "shared/math.h"
+
+namespace tp {
+
+const char* feature_name(uint32_t feature) {
+    switch (feature) {
+    case FEATURE_TEXTURES:
+        return "textures";
+    case FEATURE_PHONG_SPECULAR:
+        return "phong_specular";
+    case FEATURE_MIRROR:
+        return "mirror";
+    case FEATURE_DIELECTRIC:
+        return "dielectric";
+    case FEATURE_EMISSIVE_TRIANGLES:
+        return "emissive_triangles";
+    case FEATURE_POINT_LIGHTS:
+        return "point_lights";
+    case FEATURE_DIRECTIONAL_LIGHTS:
+        return "directional_lights";
+    case FEATURE_ENV_CONSTANT:
+        return "environment_constant";
+    case FEATURE_ENV_MAP:
+        return "environment_map";
+    case FEATURE_INSTANCING:
+        return "instancing";
+    default:
+        return "";
+    }
+}
+
+std::vector<std::string> SceneFeatures::names() const {
+    std::vector<std::string> out;
+    for (uint32_t i = 0; i < FEATURE_COUNT; ++i)
+        if (mask & (1u << i)) out.push_back(feature_name(1u << i));
+    return out;
+}
+
+std::string SceneFeatures::summary() const {
+    std::string s;
+    for (const std::string& n : names()) s += (s.empty() ? "" : ", ") + n;
+    return s.empty() ? "none" : s;
+}
+
+SceneFeatures analyze_features(const FlatScene& scene) {
+    SceneFeatures f;
+    std::vector<uint32_t> mesh_uses(scene.meshes.size(), 0);
+    for (const Instance& inst : scene.instances) {
+        if (inst.mesh < mesh_uses.size() && ++mesh_uses[inst.mesh] == 2)
+            f.mask |= FEATURE_INSTANCING;
+        const Material& m = scene.materials[inst.material];
+        if (m.kd_texture != NO_TEXTURE) f.mask |= FEATURE_TEXTURES;
+        if (m.type == MATERIAL_PHONG && !is_black(m.ks)) f.mask |= FEATURE_PHONG_SPECULAR;
+        if (m.type == MATERIAL_MIRROR) f.mask |= FEATURE_MIRROR;
+        if (m.type == MATERIAL_DIELECTRIC) f.mask |= FEATURE_DIELECTRIC;
+        // Emission is added wherever ke is not black (the path loop's step 1), whether or not
+        // the instance's triangles are also in the light list.
+        if (!is_black(m.ke)) f.mask |= FEATURE_EMISSIVE_TRIANGLES;
+    }
+    for (const Light& l : scene.lights) {
+        if (l.type == LIGHT_POINT) f.mask |= FEATURE_POINT_LIGHTS;
+        if (l.type == LIGHT_DIRECTIONAL) f.mask |= FEATURE_DIRECTIONAL_LIGHTS;
+    }
+    if (scene.params.env_light != NO_INDEX)
+        f.mask |= scene.params.env_texture == NO_TEXTURE ? FEATURE_ENV_CONSTANT : FEATURE_ENV_MAP;
+    return f;
+}
+
+uint32_t render_feature_mask(const FlatScene& scene, bool all) {
+    return all ? FEATURES_ALL : analyze_features(scene).mask;
+}
+
+} // namespace tp

@@ -1,0 +1,132 @@
+// Scene features (issue 9): which materials, lights and environment a scene uses, as bits of
+// one mask, and the integrator's dispatch over materials and lights restricted to that mask.
+// common/scene/features.h computes the mask of a FlatScene. Each engine compiles its path loop
+// for a mask: the CPU engine instantiates a template on some bits (cpu_ref/integrator.cpp), the
+// Vulkan engine passes the mask as a specialization constant (shaders/features.glsl), so the
+// compiler removes what the scene cannot reach. FEATURES_ALL is the variant that can render
+// every scene (`--features all`); a mask with a bit cleared must only ever be used for a scene
+// that lacks that feature, because the code for it is gone, not merely skipped.
+//
+// Every function here gives the result of the unrestricted one (brdf.h, lights.h) for every
+// input the mask admits: a restricted variant is the same estimator, with the same random
+// numbers, and renders the same image up to float rounding.
+#ifndef TP_SHARED_FEATURES_H
+#define TP_SHARED_FEATURES_H
+
+#include "brdf.h"
+#include "lights.h"
+
+TP_NAMESPACE_BEGIN
+
+const uint FEATURE_TEXTURES = 1u;            // a material with a diffuse texture (map_Kd)
+const uint FEATURE_PHONG_SPECULAR = 2u;      // a Phong material with ks > 0: the glossy lobe
+const uint FEATURE_MIRROR = 4u;              // a perfect mirror
+const uint FEATURE_DIELECTRIC = 8u;          // a smooth dielectric
+const uint FEATURE_EMISSIVE_TRIANGLES = 16u; // a material with ke > 0 on some instance
+const uint FEATURE_POINT_LIGHTS = 32u;
+const uint FEATURE_DIRECTIONAL_LIGHTS = 64u;
+const uint FEATURE_ENV_CONSTANT = 128u; // a constant environment
+const uint FEATURE_ENV_MAP = 256u;      // a lat-long environment map
+const uint FEATURE_INSTANCING = 512u;   // a mesh with more than one instance (reported only)
+const uint FEATURE_COUNT = 10u;
+const uint FEATURES_ALL = 1023u;
+
+inline bool feature_on(uint features, uint f) {
+    return (features & f) != 0u;
+}
+
+// A light that next-event estimation can choose; without one there are no shadow rays.
+inline bool features_sample_lights(uint features) {
+    return feature_on(features, FEATURE_EMISSIVE_TRIANGLES | FEATURE_POINT_LIGHTS |
+                                    FEATURE_DIRECTIONAL_LIGHTS | FEATURE_ENV_CONSTANT |
+                                    FEATURE_ENV_MAP);
+}
+
+// A light that BSDF sampling can also hit (area lights, the environment): the only case in
+// which multiple importance sampling has two strategies to weigh. Without one every light is
+// a delta light and no MIS weight is computed.
+inline bool features_mis(uint features) {
+    return feature_on(features,
+                      FEATURE_EMISSIVE_TRIANGLES | FEATURE_ENV_CONSTANT | FEATURE_ENV_MAP);
+}
+
+inline bool features_environment(uint features) {
+    return feature_on(features, FEATURE_ENV_CONSTANT | FEATURE_ENV_MAP);
+}
+
+inline bool features_delta_materials(uint features) {
+    return feature_on(features, FEATURE_MIRROR | FEATURE_DIELECTRIC);
+}
+
+// ---- Lambert: the modified Phong BRDF with ks = 0 -------------------------------------------
+// phong_* with ks = 0 reduce to these (p_d = 1: the diffuse lobe is always chosen, and
+// f cos / p = kd); without FEATURE_PHONG_SPECULAR every Phong material is one of them.
+inline vec3 lambert_eval(vec3 kd, vec3 n, vec3 wo, vec3 wi) {
+    if (dot(n, wi) <= 0.0f || dot(n, wo) <= 0.0f) return vec3(0.0f);
+    return kd * INV_PI;
+}
+
+inline float lambert_pdf(vec3 n, vec3 wo, vec3 wi) {
+    float cos_i = dot(n, wi);
+    if (cos_i <= 0.0f || dot(n, wo) <= 0.0f) return 0.0f;
+    return cosine_hemisphere_pdf(cos_i);
+}
+
+inline BsdfSample lambert_sample(vec3 kd, vec3 n, vec3 wo, vec2 u_dir) {
+    if (dot(n, wo) <= 0.0f) return bsdf_sample_none();
+    vec3 t;
+    vec3 b;
+    orthonormal_basis(n, t, b);
+    vec3 wi = normalize(frame_to_world(sample_cosine_hemisphere(u_dir), t, b, n));
+    float pdf = lambert_pdf(n, wo, wi);
+    if (pdf <= 0.0f) return bsdf_sample_none();
+    BsdfSample s;
+    s.wi = wi;
+    s.pdf = pdf;
+    s.weight = lambert_eval(kd, n, wo, wi) * (dot(n, wi) / pdf);
+    s.lobe = LOBE_DIFFUSE;
+    return s;
+}
+
+// ---- brdf.h's dispatch, restricted to a feature mask -----------------------------------------
+inline bool material_is_delta_in(uint features, Material m) {
+    return features_delta_materials(features) && material_is_delta(m);
+}
+
+inline vec3 bsdf_eval_in(uint features, Material m, vec3 n, vec3 wo, vec3 wi) {
+    if (features_delta_materials(features) && m.type != MATERIAL_PHONG) return vec3(0.0f);
+    if (!feature_on(features, FEATURE_PHONG_SPECULAR)) return lambert_eval(m.kd, n, wo, wi);
+    return phong_eval(m.kd, m.ks, m.ns, n, wo, wi);
+}
+
+inline float bsdf_pdf_in(uint features, Material m, vec3 n, vec3 wo, vec3 wi) {
+    if (features_delta_materials(features) && m.type != MATERIAL_PHONG) return 0.0f;
+    if (!feature_on(features, FEATURE_PHONG_SPECULAR)) return lambert_pdf(n, wo, wi);
+    return phong_pdf(m.kd, m.ks, m.ns, n, wo, wi);
+}
+
+inline BsdfSample bsdf_sample_in(uint features, Material m, vec3 n, vec3 wo, float u_lobe,
+                                 vec2 u_dir) {
+    if (feature_on(features, FEATURE_MIRROR) && m.type == MATERIAL_MIRROR)
+        return mirror_sample(m.ks, n, wo);
+    if (feature_on(features, FEATURE_DIELECTRIC) && m.type == MATERIAL_DIELECTRIC)
+        return dielectric_sample(m.tf, m.ior, n, wo, u_lobe);
+    if (!feature_on(features, FEATURE_PHONG_SPECULAR)) return lambert_sample(m.kd, n, wo, u_dir);
+    return phong_sample(m.kd, m.ks, m.ns, n, wo, u_lobe, u_dir);
+}
+
+// lights.h's sample_light (every light but the environment map), restricted to a mask.
+inline LightSample sample_light_in(uint features, Light l, vec3 p, vec2 u) {
+    if (feature_on(features, FEATURE_POINT_LIGHTS) && l.type == LIGHT_POINT)
+        return sample_point_light(l, p);
+    if (feature_on(features, FEATURE_DIRECTIONAL_LIGHTS) && l.type == LIGHT_DIRECTIONAL)
+        return sample_directional_light(l);
+    if (feature_on(features, FEATURE_EMISSIVE_TRIANGLES) && l.type == LIGHT_TRIANGLE)
+        return sample_triangle_light(l, p, u);
+    if (feature_on(features, FEATURE_ENV_CONSTANT)) return sample_constant_environment(l, u);
+    return light_sample_none();
+}
+
+TP_NAMESPACE_END
+
+#endif // TP_SHARED_FEATURES_H
