@@ -15,6 +15,10 @@ namespace tp::stress {
 // quad facing down, a point light and a dim constant environment (so that no pixel is black),
 // framed by a fixed camera. All sizes are O(1) metres around the origin.
 Scene reference_scene(uint32_t image, uint32_t spp);
+// The lights case's closed box (with its lights inside when `lit`) and the shading-normal
+// furnace (render_cases.cpp), shared with the same-seed comparisons (twin_cases.cpp).
+Scene closed_box_scene(const Scene& base, bool lit);
+Scene smooth_furnace_scene(const Size& s, float rho, double& cos_min);
 
 // Material helpers.
 uint32_t add_material(Scene& s, const std::string& name, const Material& m);

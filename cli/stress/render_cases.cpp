@@ -358,6 +358,25 @@ std::vector<CaseResult> degenerate_cases(const Engine& e, const Size& s) {
     return out;
 }
 
+// The reference scene with a closed grey box and, when `lit`, a strong point light and an
+// emissive quad inside it.
+Scene closed_box_scene(const Scene& base, bool lit) {
+    Scene closed = base;
+    const uint32_t grey = add_material(closed, "box", phong(vec3(0.6f)));
+    const glm::mat4 t = glm::scale(glm::translate(I4, vec3(0.9f, 0.31f, -0.3f)), vec3(0.3f));
+    add_object(closed, "closed box", add_mesh(closed, make_box()), grey, t);
+    if (!lit) return closed;
+    Light p{};
+    p.type = LIGHT_POINT;
+    p.p0 = vec3(0.9f, 0.31f, -0.3f);
+    p.value = vec3(100.0f);
+    closed.lights.push_back(p);
+    add_object(closed, "inner emitter", 0 /* quad */,
+               add_material(closed, "inner", emitter(vec3(50.0f))),
+               glm::scale(glm::translate(I4, vec3(0.9f, 0.2f, -0.3f)), vec3(0.1f)));
+    return closed;
+}
+
 // ---- lights -------------------------------------------------------------------------------
 std::vector<CaseResult> light_cases(const Engine& e, const Size& s) {
     std::vector<CaseResult> out;
@@ -381,26 +400,13 @@ std::vector<CaseResult> light_cases(const Engine& e, const Size& s) {
                             c.measured = fmt::format("brightest pixel {:.4g}", mx);
                         }));
     // A closed box with a strong point light and an emissive quad inside: nothing may leak out.
-    out.push_back(timed(
-        make_case("lights", "lights inside a closed box", e,
-                  "consistent with the same box without the lights (no leak)"),
-        [&](CaseResult& c) {
-            Scene closed = base;
-            const uint32_t grey = add_material(closed, "box", phong(vec3(0.6f)));
-            const glm::mat4 t =
-                glm::scale(glm::translate(I4, vec3(0.9f, 0.31f, -0.3f)), vec3(0.3f));
-            add_object(closed, "closed box", add_mesh(closed, make_box()), grey, t);
-            Scene lit = closed;
-            Light p{};
-            p.type = LIGHT_POINT;
-            p.p0 = vec3(0.9f, 0.31f, -0.3f);
-            p.value = vec3(100.0f);
-            lit.lights.push_back(p);
-            add_object(lit, "inner emitter", 0 /* quad */,
-                       add_material(lit, "inner", emitter(vec3(50.0f))),
-                       glm::scale(glm::translate(I4, vec3(0.9f, 0.2f, -0.3f)), vec3(0.1f)));
-            expect_consistent(c, render(e, flat(closed), 202), render(e, flat(lit), 203), s.alpha);
-        }));
+    out.push_back(timed(make_case("lights", "lights inside a closed box", e,
+                                  "consistent with the same box without the lights (no leak)"),
+                        [&](CaseResult& c) {
+                            expect_consistent(
+                                c, render(e, flat(closed_box_scene(base, false)), 202),
+                                render(e, flat(closed_box_scene(base, true)), 203), s.alpha);
+                        }));
     // N point lights at the reference light's position whose intensities (random, positive) sum
     // to its intensity: the same irradiance everywhere, chosen through an alias table of N.
     out.push_back(timed(make_case("lights", fmt::format("{} point lights", s.point_lights), e,
@@ -450,6 +456,34 @@ std::vector<CaseResult> light_cases(const Engine& e, const Size& s) {
     return out;
 }
 
+// The smooth low-poly furnace of shading_normal_cases(); `cos_min` receives the cosine of the
+// largest tilt between a vertex normal and the faces around it.
+Scene smooth_furnace_scene(const Size& s, float rho, double& cos_min) {
+    Scene sc;
+    sc.path = "stress: smooth furnace";
+    Material m = phong(vec3(rho));
+    m.ke = vec3(1.0f);
+    const uint32_t mat = add_material(sc, "wall", m);
+    Mesh room = make_icosphere(1, true);
+    cos_min = 1.0;
+    for (const uvec3& t : room.triangles) {
+        const vec3 a = room.positions[t.x], b = room.positions[t.y], d = room.positions[t.z];
+        const vec3 ng = glm::normalize(glm::cross(b - a, d - a));
+        for (int k = 0; k < 3; ++k)
+            cos_min = std::min(cos_min, double(std::abs(glm::dot(ng, room.normals[t[k]]))));
+    }
+    add_object(sc, "room", add_mesh(sc, room), mat, I4);
+    sc.camera.given = true;
+    sc.camera.eye = vec3(0.3f, 0.1f, 0.2f);
+    sc.camera.target = vec3(0.3f, 0.1f, -1.0f);
+    sc.camera.fov_y_degrees = 100.0f;
+    sc.settings.width = sc.settings.height = s.image;
+    sc.settings.spp = s.furnace_spp;
+    sc.settings.max_depth = 100000;
+    sc.settings.min_depth = 0;
+    return sc;
+}
+
 // ---- shading normals ----------------------------------------------------------------------
 // The white furnace (tests/integration/furnace_test.cpp) with a low-poly *smooth* room: an
 // inward icosphere of 80 faces whose interpolated normals tilt up to delta_max from the face
@@ -467,30 +501,8 @@ std::vector<CaseResult> shading_normal_cases(const Engine& e, const Size& s) {
                   "no energy gain (mean <= 1/(1-rho) + 3 SE) and no pixel below the loss bound of "
                   "the largest normal tilt"),
         [&](CaseResult& c) {
-            Scene sc;
-            sc.path = "stress: smooth furnace";
-            Material m = phong(vec3(rho));
-            m.ke = vec3(1.0f);
-            const uint32_t mat = add_material(sc, "wall", m);
-            Mesh room = make_icosphere(1, true);
-            // The largest tilt between a vertex normal and the faces around it.
             double cos_min = 1.0;
-            for (const uvec3& t : room.triangles) {
-                const vec3 a = room.positions[t.x], b = room.positions[t.y],
-                           d = room.positions[t.z];
-                const vec3 ng = glm::normalize(glm::cross(b - a, d - a));
-                for (int k = 0; k < 3; ++k)
-                    cos_min = std::min(cos_min, double(std::abs(glm::dot(ng, room.normals[t[k]]))));
-            }
-            add_object(sc, "room", add_mesh(sc, room), mat, I4);
-            sc.camera.given = true;
-            sc.camera.eye = vec3(0.3f, 0.1f, 0.2f);
-            sc.camera.target = vec3(0.3f, 0.1f, -1.0f);
-            sc.camera.fov_y_degrees = 100.0f;
-            sc.settings.width = sc.settings.height = s.image;
-            sc.settings.spp = s.furnace_spp;
-            sc.settings.max_depth = 100000;
-            sc.settings.min_depth = 0;
+            const Scene sc = smooth_furnace_scene(s, rho, cos_min);
             const Rendered r = render(e, flat(sc), 301);
             count_nan(c, r);
             double mean = 0.0, se = 0.0;

@@ -67,6 +67,9 @@ std::vector<CaseResult> degenerate_cases(const Engine& e, const Size& s);
 std::vector<CaseResult> light_cases(const Engine& e, const Size& s);
 std::vector<CaseResult> shading_normal_cases(const Engine& e, const Size& s);
 std::vector<CaseResult> accumulation_render_cases(const Engine& e, const Size& s);
+// Same-seed renders on two engines (twin_cases.cpp): both follow the same paths, so every pixel
+// must agree up to float rounding; a pixel that does not is a bug in one of them.
+std::vector<CaseResult> twin_cases(const Engine& a, const Engine& b, const Size& s);
 std::vector<CaseResult> film_accumulation_cases(const Size& s); // the double film itself
 
 // The BRDF sweep of the C++ functions, and of the same functions compiled as GLSL on `ctx`.

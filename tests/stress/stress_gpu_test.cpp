@@ -57,12 +57,21 @@ TEST_CASE("stress GPU: accumulation in compute mode", "[stress][gpu]") {
     require_all(accumulation_render_cases(gpu(), small_size()));
 }
 
+// At the CPU's size: the same-seed test below shows that compute mode renders these scenes pixel
+// for pixel as the CPU does, and at gpu_size() (64 spp, 16 furnace spp) the closed-box
+// comparison (p = 9e-5) and the furnace's per-pixel 4-SE bound (variance estimates from 16
+// heavy-tailed samples) failed on both backends alike: the statistics, not the GPU.
 TEST_CASE("stress GPU: lights in compute mode", "[stress][gpu]") {
-    require_all(light_cases(gpu(), gpu_size()));
+    require_all(light_cases(gpu(), small_size()));
 }
 
 TEST_CASE("stress GPU: shading normals in compute mode", "[stress][gpu]") {
-    require_all(shading_normal_cases(gpu(), gpu_size()));
+    require_all(shading_normal_cases(gpu(), small_size()));
+}
+
+// Same seed, same spp: the compute mode follows the CPU's paths pixel for pixel.
+TEST_CASE("stress GPU: same-seed renders match the CPU", "[stress][gpu]") {
+    require_all(twin_cases(cpu_engine(), gpu(), gpu_size()));
 }
 
 } // namespace tp::stress
