@@ -20,7 +20,6 @@
 
 #include <fmt/format.h>
 
-#include <cstdlib>
 #include <filesystem>
 #include <map>
 #include <random>
@@ -41,6 +40,7 @@ struct RaySet {
     std::vector<Ray> rays;
     std::vector<float> t_target;
     size_t edges = 0, vertices = 0, boundary_edges = 0;
+    uint64_t no_cone = 0; // rays not made: the target has no cone of entering directions
 };
 
 // Shared edges and vertices (a vertex counts when none of its edges is a boundary edge).
@@ -116,7 +116,8 @@ RaySet make_rays(const std::string& name, Mesh mesh, uint64_t min_rays) {
     std::mt19937 rng(23);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);
     std::normal_distribution<float> g;
-    const uint64_t per_target = (min_rays + tg.size() - 1) / tg.size();
+    // 5 % more than needed: targets without an entering cone (below) give no rays.
+    const uint64_t per_target = (min_rays + min_rays / 20 + tg.size() - 1) / tg.size();
     rs.rays.reserve(per_target * tg.size());
     for (const Target& t : tg) {
         vec3 avg(0.0f);
@@ -124,17 +125,26 @@ RaySet make_rays(const std::string& name, Mesh mesh, uint64_t min_rays) {
         avg = glm::normalize(avg);
         for (uint64_t k = 0; k < per_target; ++k) {
             // A direction into the surface: -avg tilted at random, kept only when it crosses
-            // every face around the target from the front (dot(d, n_f) < 0 with a margin).
-            vec3 d = -avg;
-            for (int tries = 0; tries < 8; ++tries) {
+            // every face around the target from the front (dot(d, n_f) < 0 with a margin). A
+            // target where 64 tries find none (a saddle vertex, a sharp crease) gives no ray:
+            // falling back to -avg there produced rays that graze a back-facing face through
+            // the target, which legitimately pass (3 of the bunny's 1.2e6 did, checked in
+            // double precision against every face).
+            bool found = false;
+            vec3 d(0.0f);
+            for (int tries = 0; tries < 64 && !found; ++tries) {
                 const vec3 cand = glm::normalize(
                     -avg + 0.6f * u(rng) * glm::normalize(vec3(g(rng), g(rng), g(rng))));
                 bool ok = true;
                 for (const vec3& n : t.normals) ok = ok && glm::dot(cand, n) < -0.05f;
                 if (ok) {
                     d = cand;
-                    break;
+                    found = true;
                 }
+            }
+            if (!found) {
+                ++rs.no_cone;
+                continue;
             }
             const float dist = size * (0.02f + 0.5f * u(rng));
             Ray r;
@@ -187,23 +197,22 @@ CaseResult verdict(const RaySet& rs, const std::vector<float>& t, const std::vec
         c.nan += std::isnan(t[i]);
         c.inf += found[i] && std::isinf(t[i]);
         if (!found[i] || !(t[i] <= rs.t_target[i] * (1.0f + 1e-4f))) {
-            if (std::getenv("TP_STRESS_DEBUG") && misses < 5)
-                fmt::print("miss: found {} t {} target {} ray {} {} {} dir {} {} {}\n", found[i],
-                           t[i], rs.t_target[i], rs.rays[i].origin.x, rs.rays[i].origin.y,
-                           rs.rays[i].origin.z, rs.rays[i].dir.x, rs.rays[i].dir.y,
-                           rs.rays[i].dir.z);
             ++misses;
         }
     }
     c.checked = rs.rays.size();
     c.pass = misses == 0 && truncated == 0 && c.nan == 0 && c.inf == 0 && c.checked >= 1000000;
     c.measured = fmt::format(
-        "{} misses in {} rays{}{}", misses, rs.rays.size(),
+        "{} misses in {} rays{}{}{}", misses, rs.rays.size(),
         truncated ? fmt::format(", {} traversals cut by the loop budget", truncated) : "",
         rs.boundary_edges ? fmt::format(" ({} boundary edges left out: the mesh "
                                         "has holes)",
                                         rs.boundary_edges)
-                          : "");
+                          : "",
+        rs.no_cone ? fmt::format(" ({} rays not made: no direction enters every face around "
+                                 "their target)",
+                                 rs.no_cone)
+                   : "");
     return c;
 }
 
