@@ -3,6 +3,7 @@
 #include "commands.h"
 #include "progress.h"
 
+#include "compare/colormap.h"
 #include "cpu_ref/cpu_renderer.h"
 #include "image/png_io.h"
 #include "scene/flatten.h"
@@ -14,6 +15,8 @@
 
 #include <unistd.h>
 
+#include <algorithm>
+#include <cmath>
 #include <filesystem>
 #include <optional>
 
@@ -34,7 +37,43 @@ struct RenderArgs {
     std::optional<float> fov;
     std::string stats, png;
     std::string features = "scene"; // --features: scene (specialized) or all
+    // Debugging (docs/debugging.md).
+    std::string aov, debug_pixel, debug_log, integrator = "path";
+    std::optional<uint32_t> debug_sample;
 };
+
+// --aov: "albedo,normal,depth,ids" in any subset, or "all". The layers come from one trace of
+// the pixel centre, so every named layer is written; the names are checked.
+bool parse_aov(const std::string& text) {
+    if (text.empty()) return false;
+    size_t start = 0;
+    while (start <= text.size()) {
+        const size_t end = std::min(text.find(',', start), text.size());
+        const std::string name = text.substr(start, end - start);
+        if (name != "albedo" && name != "normal" && name != "depth" && name != "ids" &&
+            name != "all")
+            input_error("--aov {}: '{}' is not an AOV (albedo, normal, depth, ids or all)", text,
+                        name);
+        start = end + 1;
+    }
+    return true;
+}
+
+// The cost view's preview: B (the total cost) as a heat map from blue (0) to red (the image's
+// maximum), instead of a tone-mapped radiance.
+std::vector<uint8_t> heat_map(const std::vector<float>& cost) {
+    float max_cost = 0.0f;
+    for (float c : cost)
+        if (std::isfinite(c)) max_cost = std::max(max_cost, c);
+    std::vector<uint8_t> rgb;
+    rgb.reserve(cost.size() * 3);
+    for (float c : cost) {
+        const double t =
+            max_cost > 0 && std::isfinite(c) ? 2.0 * double(c) / double(max_cost) - 1.0 : -1.0;
+        for (uint8_t v : diverging_color(t)) rgb.push_back(v);
+    }
+    return rgb;
+}
 
 ExrImage render_image(const RenderResult& r) {
     ExrImage img = r.film.to_exr();
@@ -84,11 +123,35 @@ int run_render(const RenderArgs& a) {
     apply_overrides(scene, o);
     const FlatScene flat = flatten(scene);
 
+    DebugRequest debug;
+    debug.integrator = integrator_from_name(a.integrator);
+    debug.aov = parse_aov(a.aov);
+    debug.log = !a.debug_log.empty();
+    debug.sample = a.debug_sample;
+    if (debug.log != !a.debug_pixel.empty())
+        input_error("--debug-log and --debug-pixel go together (the log of which pixel?)");
+    if (a.debug_sample && !debug.log) input_error("--debug-sample needs --debug-log");
+    if (debug.log) {
+        const uvec2 p = parse_pixel("--debug-pixel", a.debug_pixel);
+        if (p.x >= flat.params.camera.width || p.y >= flat.params.camera.height)
+            input_error("--debug-pixel {}: outside the {}x{} image", a.debug_pixel,
+                        flat.params.camera.width, flat.params.camera.height);
+        debug.pixel_x = p.x;
+        debug.pixel_y = p.y;
+        if (debug.sample && *debug.sample >= flat.spp)
+            input_error("--debug-sample {}: the render has samples 0 to {}", *debug.sample,
+                        flat.spp - 1);
+        if (debug.integrator != INTEGRATOR_PATH)
+            input_error("--debug-log records the path integrator, not --integrator {}",
+                        a.integrator);
+    }
+
     const std::string out =
         !a.output.empty() ? a.output : std::filesystem::path(scene.path).stem().string() + ".exr";
     check_output_path(out, "-o");
     if (!a.png.empty()) check_output_path(a.png, "--png");
     if (!a.stats.empty()) check_output_path(a.stats, "--stats");
+    if (debug.log) check_output_path(a.debug_log, "--debug-log");
 
     ProgressBar bar(fmt::format("render {}", a.backend));
     RenderOptions opt;
@@ -97,6 +160,7 @@ int run_render(const RenderArgs& a) {
     opt.threads = a.threads;
     opt.all_features = a.features == "all";
     opt.progress = bar.callback();
+    opt.debug = debug;
 
     RenderResult result;
     if (a.backend == "cpu") {
@@ -109,11 +173,38 @@ int run_render(const RenderArgs& a) {
     }
     result.stats.scene = scene.path;
 
-    write_exr(out, render_image(result));
+    ExrImage image = render_image(result);
+    if (debug.integrator != INTEGRATOR_PATH)
+        image.strings["twinpath:integrator"] = integrator_name(debug.integrator);
+    if (debug.aov) add_aov_layers(image, result.debug.aovs);
+    write_exr(out, image);
     if (!a.png.empty()) {
         const ExrImage img = result.film.to_exr();
         write_png(a.png, img.width, img.height,
-                  tonemap_srgb8(img.channel("R"), img.channel("G"), img.channel("B"), 0.0f));
+                  debug.integrator == INTEGRATOR_COST
+                      ? heat_map(img.channel("B"))
+                      : tonemap_srgb8(img.channel("R"), img.channel("G"), img.channel("B"), 0.0f));
+    }
+    if (debug.log) {
+        PathLogInfo info;
+        info.backend = result.stats.backend;
+        info.mode = result.stats.mode;
+        info.device = result.stats.device;
+        info.scene = scene.path;
+        info.seed = a.seed;
+        info.width = flat.params.camera.width;
+        info.height = flat.params.camera.height;
+        info.spp = result.stats.spp;
+        info.max_depth = flat.params.max_depth;
+        info.min_depth = flat.params.min_depth;
+        info.pixel_x = debug.pixel_x;
+        info.pixel_y = debug.pixel_y;
+        info.dropped = result.debug.dropped;
+        write_path_log(a.debug_log, info, result.debug.records);
+        if (result.debug.dropped)
+            fmt::print(stderr,
+                       "twinpath: warning: {} path-log records did not fit and were dropped\n",
+                       result.debug.dropped);
     }
     if (!a.stats.empty()) write_stats_json(a.stats, result.stats);
     const RenderStats& s = result.stats;
@@ -157,6 +248,15 @@ Subcommand add_render_command(CLI::App& app) {
     c->add_option("--features", a->features,
                   "Path loop: scene (specialized to the scene's features) or all (every feature)")
         ->check(CLI::IsMember({"scene", "all"}));
+    c->add_option("--aov", a->aov,
+                  "Add AOV layers albedo, normal, depth, ids (list or 'all'; docs/debugging.md)");
+    c->add_option("--debug-pixel", a->debug_pixel, "Pixel X,Y whose paths --debug-log records");
+    c->add_option("--debug-sample", a->debug_sample,
+                  "Record only this sample of the debug pixel (default: all)");
+    c->add_option("--debug-log", a->debug_log, "Write the debug pixel's path log (JSON)");
+    c->add_option("--integrator", a->integrator,
+                  "path (default) or a debug view: normals, albedo, depth, cost")
+        ->check(CLI::IsMember({"path", "normals", "albedo", "depth", "cost"}));
     return {c, [a] { return run_render(*a); }};
 }
 

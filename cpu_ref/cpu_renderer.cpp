@@ -1,5 +1,6 @@
 #include "cpu_ref/cpu_renderer.h"
 
+#include "cpu_ref/debug_views.h"
 #include "cpu_ref/embree_accel.h"
 #include "cpu_ref/integrator.h"
 #include "scene/features.h"
@@ -63,6 +64,10 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
     st.feature_variant = options.all_features ? "all" : "scene";
     const CpuIntegrator integrator(seeded, accel, st.feature_mask);
 
+    const DebugRequest& debug = options.debug;
+    const CpuDebugViews views(seeded, accel, debug.integrator);
+    const bool view = debug.integrator != INTEGRATOR_PATH;
+
     result.film = Film(W, H);
     st.width = W;
     st.height = H;
@@ -74,7 +79,8 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
     double snapshot_seconds = 0; // film copies for checkpoints: not rendering time
     uint32_t done = 0;
     while (done < scene.spp) {
-        const uint32_t s0 = done, s1 = std::min(options.next_stop(done, scene.spp), done + pass_spp);
+        const uint32_t s0 = done,
+                       s1 = std::min(options.next_stop(done, scene.spp), done + pass_spp);
         tbb::combinable<TileCounters> counters;
         tbb::parallel_for(
             tbb::blocked_range<uint32_t>(0, tiles_x * tiles_y),
@@ -85,7 +91,8 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
                     for (uint32_t y = y0; y < std::min(y0 + kTile, H); ++y)
                         for (uint32_t x = x0; x < std::min(x0 + kTile, W); ++x)
                             for (uint32_t s = s0; s < s1; ++s) {
-                                const vec3 L = integrator.radiance(x, y, s, c.rays);
+                                const vec3 L = view ? views.radiance(x, y, s)
+                                                    : integrator.radiance(x, y, s, c.rays);
                                 if (!is_finite3(L)) {
                                     ++c.nan; // counted and dropped (DESIGN.md, "No silent NaN")
                                     continue;
@@ -102,7 +109,7 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
         if (options.progress) options.progress(double(done) / double(scene.spp));
         if (options.on_checkpoint && options.is_checkpoint(done)) {
             const auto t_snap = std::chrono::steady_clock::now();
-            RenderResult snapshot{result.film, st};
+            RenderResult snapshot{result.film, st, {}};
             snapshot.stats.wall_time_s = seconds_since(t0) - snapshot_seconds;
             snapshot.stats.spp = done;
             snapshot.stats.samples = uint64_t(done) * W * H - st.nan_samples;
@@ -114,6 +121,20 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
     st.wall_time_s = seconds_since(t0) - snapshot_seconds;
     st.spp = done;
     st.samples = uint64_t(done) * W * H - st.nan_samples;
+
+    if (debug.aov) {
+        result.debug.aovs.resize(size_t(W) * H);
+        tbb::parallel_for(uint32_t(0), H, [&](uint32_t y) {
+            for (uint32_t x = 0; x < W; ++x)
+                result.debug.aovs[size_t(y) * W + x] =
+                    views.primary_aov(camera_center_ray(seeded.params.camera, x, y));
+        });
+    }
+    if (debug.log) {
+        RayCounts ignored;
+        for (uint32_t s = debug.first_sample(); s < std::min(debug.end_sample(done), done); ++s)
+            integrator.record(debug.pixel_x, debug.pixel_y, s, ignored, result.debug.records);
+    }
     return result;
 }
 

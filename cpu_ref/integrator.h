@@ -6,9 +6,11 @@
 #include "cpu_ref/scene_access.h"
 #include "render/stats.h"
 #include "shared/features.h"
+#include "shared/path_log.h"
 
 #include <array>
 #include <utility>
+#include <vector>
 
 namespace tp {
 
@@ -24,11 +26,21 @@ class CpuIntegrator {
         return (this->*loop_)(x, y, sample_index, rays);
     }
 
+    // The same sample with every vertex appended to `log` (path logs, shared/path_log.h): the
+    // loop with every material feature compiled in and recording on.
+    vec3 record(uint32_t x, uint32_t y, uint32_t sample_index, RayCounts& rays,
+                std::vector<PathVertex>& log) const;
+
   private:
     // The path loop compiled for the feature bits `Fixed` (a subset of kFixedFeatures); the
     // other bits come from features_ at run time.
     template <uint32_t Fixed>
     vec3 radiance_for(uint32_t x, uint32_t y, uint32_t sample_index, RayCounts& rays) const;
+    // The loop itself; Record: fill a PathVertex per vertex into *log (else nothing of it is
+    // compiled).
+    template <uint32_t Fixed, bool Record>
+    vec3 trace_path(uint32_t x, uint32_t y, uint32_t sample_index, RayCounts& rays,
+                    std::vector<PathVertex>* log) const;
     using Loop = vec3 (CpuIntegrator::*)(uint32_t, uint32_t, uint32_t, RayCounts&) const;
     template <size_t... I>
     static std::array<Loop, sizeof...(I)> make_loops(std::index_sequence<I...>);

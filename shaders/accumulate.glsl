@@ -58,7 +58,13 @@ PixelCounts render_pixel(uvec2 pixel) {
         rays.camera = 0u;
         rays.extension = 0u;
         rays.shadow = 0u;
+#ifdef TP_DEBUG_SHADER
+        vec3 L = debug_header.integrator == INTEGRATOR_PATH
+                     ? path_radiance(pixel.x, pixel.y, s, rays)
+                     : debug_view_radiance(pixel.x, pixel.y, s);
+#else
         vec3 L = path_radiance(pixel.x, pixel.y, s, rays);
+#endif
         if (!loop_budget_held()) break; // sample s is discarded and traced again
         c.rays.camera += rays.camera;
         c.rays.extension += rays.extension;

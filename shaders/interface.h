@@ -33,7 +33,9 @@ const uint BINDING_BVH_TRIS = 14u;   // BvhTriangle[] (compute mode)
 const uint BINDING_TLAS = 13u;       // top-level acceleration structure (pipeline mode; no 14)
 const uint BINDING_ACCUM = 15u;      // PixelAccum[width * height]
 const uint BINDING_COUNTERS = 16u;   // uint[COUNTER_WORDS]
-const uint BINDING_COUNT = 17u;
+const uint BINDING_DEBUG = 17u;      // DebugHeader + PathVertex[] (debug variant only)
+const uint BINDING_AOV = 18u;        // PixelAov[width * height] (debug variant only)
+const uint BINDING_COUNT = 19u;
 
 // ---- specialization constants (shaders/features.glsl) ---------------------------------------
 const uint SPEC_SCENE_FEATURES = 0u; // uint: the FEATURE_* mask the path loop is compiled for

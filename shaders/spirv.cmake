@@ -1,4 +1,5 @@
-# tp_embed_spirv(OUTPUT <header> SOURCE <shader> NAME <identifier> [INCLUDES <dir>...])
+# tp_embed_spirv(OUTPUT <header> SOURCE <shader> NAME <identifier> [INCLUDES <dir>...]
+#                [DEFINES <NAME[=value]>...])
 #
 # Compiles a GLSL shader with glslangValidator for Vulkan 1.2 into a C header that holds the
 # SPIR-V words as `const uint32_t NAME[]`. glslang's --depfile lists every file the shader
@@ -7,10 +8,13 @@
 find_program(GLSLANG_VALIDATOR glslangValidator REQUIRED)
 
 function(tp_embed_spirv)
-  cmake_parse_arguments(S "" "OUTPUT;SOURCE;NAME" "INCLUDES" ${ARGN})
+  cmake_parse_arguments(S "" "OUTPUT;SOURCE;NAME" "INCLUDES;DEFINES" ${ARGN})
   set(includes -I${PROJECT_SOURCE_DIR}/shaders -I${PROJECT_SOURCE_DIR}/common)
   foreach(dir IN LISTS S_INCLUDES)
     list(APPEND includes -I${dir})
+  endforeach()
+  foreach(def IN LISTS S_DEFINES)
+    list(APPEND includes -D${def})
   endforeach()
   get_filename_component(out_dir ${S_OUTPUT} DIRECTORY)
   add_custom_command(

@@ -37,6 +37,14 @@ layout(std430, set = 0, binding = BINDING_BVH_TRIS) readonly buffer BvhTriangleB
 
 const uint BVH_INSTANCE_FLAG = 0x80000000u;
 
+#ifdef TP_DEBUG_SHADER
+// The traversal cost the cost view shows (debug.glsl): nodes visited and triangles tested by
+// the trace calls since the view cleared them. Only in the debug variant.
+#define TP_TRACE_COUNTS
+uint g_trace_nodes = 0u;
+uint g_trace_triangles = 0u;
+#endif
+
 BvhNode bvh_load_node(uint i) {
     vec4 a = bvh_node_words[4u * i];
     vec4 b = bvh_node_words[4u * i + 1u];
@@ -91,6 +99,9 @@ bool bvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
             entry = meshes[I.mesh].bvh_root;
         }
         BvhNode n = bvh_load_node(entry);
+#ifdef TP_TRACE_COUNTS
+        ++g_trace_nodes;
+#endif
         float t0;
         float t1;
         bool hit0 = n.ref0 != BVH_EMPTY && intersect_aabb(org, inv_dir, n.lo0, n.hi0, tmax, t0);
@@ -105,6 +116,9 @@ bool bvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
                     vec4 a = bvh_triangle_words[3u * i];
                     vec4 b = bvh_triangle_words[3u * i + 1u];
                     vec4 c = bvh_triangle_words[3u * i + 2u];
+#ifdef TP_TRACE_COUNTS
+                    ++g_trace_triangles;
+#endif
                     vec3 tuv;
                     if (!intersect_triangle(org, wr, a.xyz, b.xyz, c.xyz, tmax, tuv)) continue;
                     found = true;
@@ -112,7 +126,11 @@ bool bvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
                     hit.t = tuv.x;
                     hit.instance = inst;
                     hit.primitive = floatBitsToUint(a.w);
+#ifdef TP_BUG_SWAP_BARY // planted bug of the debugging tests (tests/gpu/debug_workflow_test.cpp)
+                    hit.bary = vec2(tuv.z, tuv.y);
+#else
                     hit.bary = vec2(tuv.y, tuv.z);
+#endif
                     if (any_hit) return true;
                 }
             }

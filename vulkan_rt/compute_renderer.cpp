@@ -1,15 +1,17 @@
 #include "vulkan_rt/compute_renderer.h"
 
+#include "scene/features.h"
 #include "vulkan_rt/bvh_builder.h"
 #include "vulkan_rt/compute_program.h"
-#include "scene/features.h"
 #include "vulkan_rt/render_loop.h"
 #include "vulkan_rt/scene_buffers.h"
 
 #include <chrono>
+#include <memory>
 
 // Generated from shaders/render_compute.comp (shaders/spirv.cmake).
 #include "render_compute.spv.h"
+#include "render_compute_debug.spv.h"
 
 namespace tp {
 namespace {
@@ -17,13 +19,21 @@ namespace {
 // The compute shader over the BVH arrays it owns (slots 13 and 14).
 class ComputeTracer : public Tracer {
   public:
+    // `debug`: also build the debug variant (record_debug_launch).
     // `features`: the feature mask the render shader is specialized to (shared/features.h).
-    ComputeTracer(const VulkanContext& ctx, const BvhBuild& bvh, uint32_t features)
+    ComputeTracer(const VulkanContext& ctx, const BvhBuild& bvh, bool debug, uint32_t features)
         : bvh_(upload_bvh(ctx, bvh)), top_root_(bvh.top_root),
           program_(ctx, tp_spirv_render_compute, sizeof(tp_spirv_render_compute), BINDING_COUNT,
                    sizeof(BatchParams), features, true) {
-        program_.bind(BINDING_BVH_NODES, bvh_.nodes);
-        program_.bind(BINDING_BVH_TRIS, bvh_.triangles);
+        if (debug) {
+            const std::vector<uint32_t> spirv =
+                debug_spirv(tp_spirv_render_compute_debug, sizeof(tp_spirv_render_compute_debug));
+            debug_program_ =
+                std::make_unique<ComputeProgram>(ctx, spirv.data(), spirv.size() * 4, BINDING_COUNT,
+                                                 sizeof(BatchParams), features, false);
+        }
+        bind(BINDING_BVH_NODES, bvh_.nodes);
+        bind(BINDING_BVH_TRIS, bvh_.triangles);
     }
 
     const char* mode() const override { return "compute"; }
@@ -32,22 +42,35 @@ class ComputeTracer : public Tracer {
         return VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
     }
 
-    void bind(uint32_t binding, const Buffer& buffer) override { program_.bind(binding, buffer); }
+    void bind(uint32_t binding, const Buffer& buffer) override {
+        program_.bind(binding, buffer);
+        if (debug_program_) debug_program_->bind(binding, buffer);
+    }
 
     void record_launch(VkCommandBuffer cmd, const BatchParams& batch,
                        uint32_t width) const override {
+        dispatch(program_, cmd, batch, width);
+    }
+    void record_debug_launch(VkCommandBuffer cmd, const BatchParams& batch,
+                             uint32_t width) const override {
+        dispatch(*debug_program_, cmd, batch, width);
+    }
+
+  private:
+    void dispatch(const ComputeProgram& program, VkCommandBuffer cmd, const BatchParams& batch,
+                  uint32_t width) const {
         BatchParams push = batch;
         push.bvh_top_root = top_root_;
         const uint32_t groups_x = (width + RENDER_GROUP_X - 1) / RENDER_GROUP_X;
         const uint32_t rows = batch.row_end - batch.row_begin;
         const uint32_t groups_y = (rows + RENDER_GROUP_Y - 1) / RENDER_GROUP_Y;
-        program_.record_dispatch(cmd, &push, groups_x, groups_y, 1);
+        program.record_dispatch(cmd, &push, groups_x, groups_y, 1);
     }
 
-  private:
     BvhBuffers bvh_;
     uint32_t top_root_;
     ComputeProgram program_;
+    std::unique_ptr<ComputeProgram> debug_program_;
 };
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
@@ -66,7 +89,8 @@ RenderResult render_compute(const VulkanContext& ctx, const FlatScene& scene,
     const SceneBuffers sb =
         upload_scene(ctx, scene, seeded_params(scene, options.seed), bvh.mesh_roots, 0,
                      render_feature_mask(scene, options.all_features));
-    ComputeTracer tracer(ctx, bvh, render_feature_mask(scene, options.all_features));
+    ComputeTracer tracer(ctx, bvh, options.debug.active() || debug_spirv_overridden(),
+                         render_feature_mask(scene, options.all_features));
     add_cache_stats(tracer.cache_use(), accel.extra);
     return render_batches(ctx, scene, options, sb, tracer, accel);
 }

@@ -1,13 +1,19 @@
 #include "vulkan_rt/pipeline_renderer.h"
 
 #include "scene/features.h"
+#include "util/error.h"
 #include "vulkan_rt/accel_structures.h"
 #include "vulkan_rt/render_loop.h"
 #include "vulkan_rt/rt_functions.h"
 #include "vulkan_rt/rt_program.h"
 
 #include <chrono>
+#include <memory>
 #include <string>
+#include <vector>
+
+// Generated from shaders/render_pipeline.rgen with TP_DEBUG_SHADER (shaders/spirv.cmake).
+#include "render_pipeline_debug.spv.h"
 
 namespace tp {
 namespace {
@@ -15,10 +21,19 @@ namespace {
 // The ray-tracing pipeline over the TLAS it binds to slot 13.
 class PipelineTracer : public Tracer {
   public:
+    // `debug`: also build the pipeline with the debug ray-generation shader.
     PipelineTracer(const VulkanContext& ctx, const RtFunctions& rt, VkAccelerationStructureKHR tlas,
-                   uint32_t features)
-        : program_(ctx, rt, sizeof(BatchParams), features) {
+                   bool debug, uint32_t features)
+        : program_(ctx, rt, sizeof(BatchParams), nullptr, 0, features) {
         program_.bind_tlas(tlas);
+        if (debug) {
+            debug_spirv_ =
+                debug_spirv(tp_spirv_render_pipeline_debug, sizeof(tp_spirv_render_pipeline_debug));
+            debug_program_ =
+                std::make_unique<RtProgram>(ctx, rt, sizeof(BatchParams), debug_spirv_.data(),
+                                            debug_spirv_.size() * 4, features);
+            debug_program_->bind_tlas(tlas);
+        }
     }
 
     const char* mode() const override { return "pipeline"; }
@@ -26,20 +41,33 @@ class PipelineTracer : public Tracer {
     VkPipelineStageFlags shader_stage() const override {
         return VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR;
     }
-    void bind(uint32_t binding, const Buffer& buffer) override { program_.bind(binding, buffer); }
+    void bind(uint32_t binding, const Buffer& buffer) override {
+        program_.bind(binding, buffer);
+        if (debug_program_) debug_program_->bind(binding, buffer);
+    }
     void record_launch(VkCommandBuffer cmd, const BatchParams& batch,
                        uint32_t width) const override {
         program_.record_trace(cmd, &batch, width, batch.row_end - batch.row_begin);
     }
+    void record_debug_launch(VkCommandBuffer cmd, const BatchParams& batch,
+                             uint32_t width) const override {
+        debug_program_->record_trace(cmd, &batch, width, batch.row_end - batch.row_begin);
+    }
 
   private:
     RtProgram program_;
+    std::vector<uint32_t> debug_spirv_;
+    std::unique_ptr<RtProgram> debug_program_;
 };
 
 } // namespace
 
 RenderResult render_pipeline(const VulkanContext& ctx, const FlatScene& scene,
                              const RenderOptions& options) {
+    if (options.debug.integrator == INTEGRATOR_COST)
+        input_error("--integrator cost counts BVH nodes and triangles of the software traversal: "
+                    "use --vk-mode compute (the hardware traversal of pipeline mode exposes no "
+                    "counts; docs/debugging.md)");
     const RtFunctions rt(ctx.device());
     const SceneBuffers sb =
         upload_scene(ctx, scene, seeded_params(scene, options.seed), {}, kAccelInputUsage,
@@ -52,7 +80,8 @@ RenderResult render_pipeline(const VulkanContext& ctx, const FlatScene& scene,
     accel.bytes = as.bytes();
     accel.extra["blas_count"] = std::to_string(as.blas_count());
     accel.extra["blas_bytes_uncompacted"] = std::to_string(as.uncompacted_blas_bytes());
-    PipelineTracer tracer(ctx, rt, as.tlas(), render_feature_mask(scene, options.all_features));
+    PipelineTracer tracer(ctx, rt, as.tlas(), options.debug.active() || debug_spirv_overridden(),
+                          render_feature_mask(scene, options.all_features));
     add_cache_stats(tracer.cache_use(), accel.extra);
     return render_batches(ctx, scene, options, sb, tracer, accel);
 }

@@ -6,7 +6,9 @@
 #include "vulkan_rt/gpu_timer.h"
 
 #include <chrono>
+#include <cstdlib>
 #include <cstring>
+#include <fstream>
 
 namespace tp {
 namespace {
@@ -27,20 +29,37 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 class BatchSession {
   public:
     BatchSession(const VulkanContext& ctx, const FlatScene& scene, const SceneBuffers& sb,
-                 Tracer& tracer)
+                 Tracer& tracer, const DebugRequest& debug)
         : ctx_(ctx), tracer_(tracer), width_(scene.params.camera.width),
           height_(scene.params.camera.height),
           accum_(ctx, VkDeviceSize(width_) * height_ * sizeof(PixelAccum), kStorage, false),
           counters_(ctx, kCounterBytes, kStorage, false),
           host_counters_(ctx, kCounterBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true),
+          debug_capacity_(debug_capacity(scene, debug)),
+          debug_(ctx, sizeof(DebugHeader) + VkDeviceSize(debug_capacity_) * sizeof(PathVertex),
+                 kStorage, false),
+          aov_(ctx,
+               debug.aov ? VkDeviceSize(width_) * height_ * sizeof(PixelAov) : sizeof(PixelAov),
+               kStorage, false),
           timer_(ctx) {
         for (uint32_t slot = 0; slot < sb.slots.size(); ++slot) tracer.bind(slot, sb.slots[slot]);
         tracer.bind(BINDING_ACCUM, accum_);
         tracer.bind(BINDING_COUNTERS, counters_);
+        tracer.bind(BINDING_DEBUG, debug_);
+        tracer.bind(BINDING_AOV, aov_);
         std::memset(host_counters_.mapped(), 0, kCounterBytes);
+        debug_header_.capacity = debug_capacity_;
+        debug_header_.integrator = debug.integrator;
+        debug_header_.pixel_x = debug.pixel_x;
+        debug_header_.pixel_y = debug.pixel_y;
+        debug_render_ = debug.integrator != INTEGRATOR_PATH || debug_spirv_overridden();
         ctx.submit_and_wait([&](VkCommandBuffer cmd) {
             vkCmdFillBuffer(cmd, accum_.handle(), 0, VK_WHOLE_SIZE, 0);
             vkCmdFillBuffer(cmd, counters_.handle(), 0, VK_WHOLE_SIZE, 0);
+            vkCmdFillBuffer(cmd, debug_.handle(), 0, VK_WHOLE_SIZE, 0);
+            vkCmdFillBuffer(cmd, aov_.handle(), 0, VK_WHOLE_SIZE, 0);
+            record_shader_barrier(cmd, tracer.shader_stage());
+            vkCmdUpdateBuffer(cmd, debug_.handle(), 0, sizeof(DebugHeader), &debug_header_);
         });
         params_.env_table_size = uint32_t(scene.env_table.size());
         params_.probe_iterations = LOOP_PROBE_ITERATIONS;
@@ -71,6 +90,43 @@ class BatchSession {
         }
     }
 
+    // The AOV pass: every pixel's PixelAov (shared/path_log.h).
+    std::vector<PixelAov> aovs() {
+        set_pass(DEBUG_PASS_AOV);
+        BatchParams b = params_;
+        b.row_begin = 0;
+        b.row_end = height_;
+        b.sample_begin = 0;
+        b.sample_count = 0;
+        debug_launch(b);
+        std::vector<PixelAov> out(size_t(width_) * height_);
+        read_buffer(aov_, out.data(), out.size() * sizeof(PixelAov));
+        return out;
+    }
+
+    // The log pass: samples [first, end) of the debug pixel, one dispatch each, every vertex
+    // recorded into the debug buffer.
+    void path_log(uint32_t first, uint32_t end, uint32_t y, DebugOutput& out) {
+        set_pass(DEBUG_PASS_LOG);
+        for (uint32_t s = first; s < end; ++s) {
+            BatchParams b = params_;
+            b.row_begin = y;
+            b.row_end = y + 1;
+            b.sample_begin = s;
+            b.sample_count = 1;
+            debug_launch(b);
+        }
+        DebugHeader h{};
+        read_buffer(debug_, &h, sizeof(h));
+        const uint32_t n = std::min(h.count, h.capacity);
+        out.dropped = h.count - n;
+        std::vector<uint8_t> bytes(sizeof(DebugHeader) + size_t(n) * sizeof(PathVertex));
+        read_buffer(debug_, bytes.data(), bytes.size());
+        out.records.resize(n);
+        std::memcpy(out.records.data(), bytes.data() + sizeof(DebugHeader),
+                    size_t(n) * sizeof(PathVertex));
+    }
+
     // Merges every pixel into a double-precision film and fills the counters of `st`.
     Film read_back(RenderStats& st) const {
         const Buffer host(ctx_, accum_.size(), VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
@@ -96,6 +152,41 @@ class BatchSession {
 
   private:
     static constexpr VkDeviceSize kCounterBytes = COUNTER_WORDS * sizeof(uint32_t);
+    // Path-log records the GPU can hold: every logged sample's longest path, at most 2^16
+    // (18 MiB); further records are counted as dropped.
+    static uint32_t debug_capacity(const FlatScene& scene, const DebugRequest& d) {
+        if (!d.log) return 1;
+        const uint64_t n = uint64_t(d.end_sample(scene.spp) - d.first_sample()) *
+                           path_log_records_per_sample(scene.params.max_depth);
+        return uint32_t(std::clamp<uint64_t>(n, 1, 1u << 16));
+    }
+
+    void set_pass(uint32_t pass) {
+        debug_header_.pass = pass;
+        ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
+            record_shader_barrier(cmd, tracer_.shader_stage());
+            vkCmdUpdateBuffer(cmd, debug_.handle(), 0, sizeof(DebugHeader), &debug_header_);
+        });
+    }
+
+    void debug_launch(const BatchParams& b) {
+        ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
+            record_shader_barrier(cmd, tracer_.shader_stage());
+            tracer_.record_debug_launch(cmd, b, width_);
+            record_shader_barrier(cmd, tracer_.shader_stage());
+        });
+    }
+
+    void read_buffer(const Buffer& src, void* dst, size_t bytes) const {
+        const Buffer host(ctx_, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+        ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
+            record_shader_barrier(cmd, tracer_.shader_stage());
+            const VkBufferCopy region{0, 0, bytes};
+            vkCmdCopyBuffer(cmd, src.handle(), host.handle(), 1, &region);
+            record_host_read_barrier(cmd);
+        });
+        std::memcpy(dst, host.mapped(), bytes);
+    }
 
     // One submission: clear the cut-short counter, launch the batch's rows, copy the counters
     // back.
@@ -107,7 +198,10 @@ class BatchSession {
                             2 * sizeof(uint32_t), 0);
             record_shader_barrier(cmd, stage);
             timer_.record_begin(cmd);
-            tracer_.record_launch(cmd, params_, width_);
+            if (debug_render_)
+                tracer_.record_debug_launch(cmd, params_, width_);
+            else
+                tracer_.record_launch(cmd, params_, width_);
             timer_.record_end(cmd);
             record_shader_barrier(cmd, stage);
             const VkBufferCopy region{0, 0, kCounterBytes};
@@ -127,6 +221,10 @@ class BatchSession {
     Tracer& tracer_;
     uint32_t width_, height_;
     Buffer accum_, counters_, host_counters_;
+    uint32_t debug_capacity_;
+    Buffer debug_, aov_;
+    DebugHeader debug_header_{};
+    bool debug_render_ = false; // the image itself is rendered by the debug variant
     GpuTimer timer_;
     BatchParams params_{};
     double gpu_seconds_ = 0;
@@ -157,7 +255,7 @@ RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
     st.accel_bytes = accel.bytes;
     for (const auto& [key, value] : accel.extra) st.extra[key] = value;
 
-    BatchSession session(ctx, scene, scene_buffers, tracer);
+    BatchSession session(ctx, scene, scene_buffers, tracer, options.debug);
     BatchPlanner planner(st.width, st.height, scene.spp, kTargetSubmitSeconds);
     planner.stop_at(options.next_stop(0, scene.spp));
     const auto t0 = std::chrono::steady_clock::now();
@@ -171,7 +269,7 @@ RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
         if (planner.done() && options.on_checkpoint &&
             options.is_checkpoint(planner.samples_done())) {
             const auto t_snap = std::chrono::steady_clock::now();
-            RenderResult snapshot{Film(), st};
+            RenderResult snapshot{Film(), st, {}};
             snapshot.stats.wall_time_s = seconds_since(t0) - snapshot_seconds;
             snapshot.stats.gpu_time_s = session.gpu_seconds();
             snapshot.stats.spp = planner.samples_done();
@@ -190,7 +288,30 @@ RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
     st.extra["submissions"] = std::to_string(session.submissions());
     st.extra["repeated_submissions"] = std::to_string(session.repeats());
     result.film = session.read_back(st);
+    const DebugRequest& d = options.debug;
+    if (d.aov) result.debug.aovs = session.aovs();
+    if (d.log)
+        session.path_log(d.first_sample(), std::min(d.end_sample(scene.spp), scene.spp), d.pixel_y,
+                         result.debug);
     return result;
+}
+
+std::vector<uint32_t> debug_spirv(const uint32_t* embedded, size_t bytes) {
+    const char* path = std::getenv("TWINPATH_DEBUG_SPIRV");
+    if (!path || !*path) return std::vector<uint32_t>(embedded, embedded + bytes / 4);
+    std::ifstream in(path, std::ios::binary);
+    std::vector<char> data((std::istreambuf_iterator<char>(in)), std::istreambuf_iterator<char>());
+    if (!in.good() && !in.eof()) runtime_error("TWINPATH_DEBUG_SPIRV={}: cannot read it", path);
+    if (data.empty() || data.size() % 4 != 0)
+        runtime_error("TWINPATH_DEBUG_SPIRV={}: not a SPIR-V module", path);
+    std::vector<uint32_t> words(data.size() / 4);
+    std::memcpy(words.data(), data.data(), data.size());
+    return words;
+}
+
+bool debug_spirv_overridden() {
+    const char* path = std::getenv("TWINPATH_DEBUG_SPIRV");
+    return path && *path;
 }
 
 } // namespace tp

@@ -14,6 +14,7 @@
 
 #include <map>
 #include <string>
+#include <vector>
 
 namespace tp {
 
@@ -29,7 +30,18 @@ class Tracer {
     // columns, with `batch` as push constants.
     virtual void record_launch(VkCommandBuffer cmd, const BatchParams& batch,
                                uint32_t width) const = 0;
+    // The same with the debug variant of the shader (TP_DEBUG_SHADER: path logs, AOVs, debug
+    // views; shaders/debug.glsl), which the tracer builds when the render's DebugRequest is
+    // active. What it does is in the debug buffer's header (shared/path_log.h).
+    virtual void record_debug_launch(VkCommandBuffer cmd, const BatchParams& batch,
+                                     uint32_t width) const = 0;
 };
+
+// The SPIR-V of a debug variant: the embedded one, or the file TWINPATH_DEBUG_SPIRV names (a
+// test hook: tests/gpu/debug_workflow_test.cpp renders with shaders that carry planted bugs).
+// With the override the debug variant also renders the image itself (render_batches).
+std::vector<uint32_t> debug_spirv(const uint32_t* embedded, size_t bytes);
+bool debug_spirv_overridden();
 
 // What the mode built before rendering, for the statistics.
 struct AccelStats {

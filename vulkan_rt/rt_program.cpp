@@ -57,8 +57,8 @@ VkStridedDeviceAddressRegionKHR region(VkDeviceAddress table, const SbtRegion& r
 } // namespace
 
 RtProgram::RtProgram(const VulkanContext& ctx, const RtFunctions& rt, uint32_t push_bytes,
-                     uint32_t features)
-    : ctx_(ctx), rt_(rt), features_(features),
+                     const uint32_t* raygen, size_t raygen_bytes, uint32_t features)
+    : ctx_(ctx), rt_(rt), raygen_spirv_(raygen), raygen_bytes_(raygen_bytes), features_(features),
       bindings_(ctx, pipeline_slots(), VK_SHADER_STAGE_RAYGEN_BIT_KHR, push_bytes) {
     create_pipeline();
     try {
@@ -93,8 +93,9 @@ void RtProgram::create_pipeline() {
     for (uint32_t i = 0; i < kGroupCount; ++i) {
         VkShaderModuleCreateInfo mi{};
         mi.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
-        mi.codeSize = kStages[i].bytes;
-        mi.pCode = kStages[i].spirv;
+        const bool own_raygen = i == 0 && raygen_spirv_;
+        mi.codeSize = own_raygen ? raygen_bytes_ : kStages[i].bytes;
+        mi.pCode = own_raygen ? raygen_spirv_ : kStages[i].spirv;
         VkShaderModule module = VK_NULL_HANDLE;
         vk_check(vkCreateShaderModule(device, &mi, nullptr, &module), "loading a shader");
         modules.push_back(module);

@@ -4,19 +4,21 @@
 // TLAS in slot 13; and the vkCmdTraceRaysKHR of a batch.
 #pragma once
 
+#include "shared/features.h"
 #include "vulkan_rt/buffer.h"
 #include "vulkan_rt/context.h"
 #include "vulkan_rt/pipeline_bindings.h"
 #include "vulkan_rt/pipeline_cache.h"
 #include "vulkan_rt/rt_functions.h"
-#include "shared/features.h"
 
 namespace tp {
 
 class RtProgram {
   public:
-    // `features`: the ray-generation shader's specialization (shaders/features.glsl).
+    // `raygen`/`raygen_bytes`: another ray-generation module in place of render_pipeline.rgen
+    // (its debug variant); null: the normal one.
     RtProgram(const VulkanContext& ctx, const RtFunctions& rt, uint32_t push_bytes,
+              const uint32_t* raygen = nullptr, size_t raygen_bytes = 0,
               uint32_t features = FEATURES_ALL);
     ~RtProgram();
     RtProgram(const RtProgram&) = delete;
@@ -28,8 +30,7 @@ class RtProgram {
 
     // Binds the pipeline and the set, pushes the constants and launches width x height
     // ray-generation invocations.
-    void record_trace(VkCommandBuffer cmd, const void* push, uint32_t width,
-                      uint32_t height) const;
+    void record_trace(VkCommandBuffer cmd, const void* push, uint32_t width, uint32_t height) const;
 
     // The pipeline cache's part in creating the pipeline (pipeline_cache.h).
     const PipelineCacheUse& cache_use() const { return cache_use_; }
@@ -40,7 +41,9 @@ class RtProgram {
 
     const VulkanContext& ctx_;
     const RtFunctions& rt_;
-    uint32_t features_;
+    const uint32_t* raygen_spirv_;
+    size_t raygen_bytes_;
+    uint32_t features_; // the ray-generation shader's specialization (features.glsl)
     PipelineCacheUse cache_use_;
     PipelineBindings bindings_;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
