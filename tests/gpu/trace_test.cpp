@@ -92,6 +92,9 @@ void compare_with_embree(const FlatScene& scene) {
     bound.push_back(&bvh_buffers.triangles);
     bound.push_back(&dummy); // accumulators
     bound.push_back(&dummy); // counters
+    bound.push_back(&dummy); // debug buffer (debug variant only)
+    bound.push_back(&dummy); // AOVs (debug variant only)
+    static_assert(BINDING_AOV + 1 == BINDING_COUNT, "every interface slot is bound above");
 
     const std::vector<Ray> rays = random_rays(scene, 20000, 11);
     BatchParams bp{};
