@@ -6,6 +6,8 @@
 #include "vulkan_rt/context.h"
 #include "vulkan_rt/pipeline_renderer.h"
 
+#include <memory>
+
 namespace tp {
 namespace {
 
@@ -15,13 +17,41 @@ void check_validation(const VulkanInstance& instance) {
                       instance.validation_messages());
 }
 
+// The device opened by the last render, kept for the next one with the same request. twinpath
+// bench and the stress sweeps render dozens of times in one process; opening and closing an
+// instance and a device for each render made vkCreateInstance fail with
+// VK_ERROR_INCOMPATIBLE_DRIVER after about 30 renders on an H200 (driver 580.159.04).
+// A render that failed closes it (the device may be lost).
+std::unique_ptr<VulkanContext> open_device;
+std::string open_request;
+
+const VulkanContext& open_context(const VulkanOptions& vk) {
+    const std::string request = vk.device + '\n' + vk.mode;
+    if (!open_device || open_request != request) {
+        open_device.reset(); // one device at a time
+        open_device = std::make_unique<VulkanContext>(vk.device, vk.mode);
+        open_request = request;
+    }
+    return *open_device;
+}
+
+RenderResult render_on(const VulkanContext& ctx, const FlatScene& scene,
+                       const RenderOptions& options) {
+    try {
+        return ctx.mode() == "pipeline" ? render_pipeline(ctx, scene, options)
+                                        : render_compute(ctx, scene, options);
+    } catch (...) {
+        open_device.reset();
+        throw;
+    }
+}
+
 } // namespace
 
 RenderResult render_vulkan(const FlatScene& scene, const RenderOptions& options,
                            const VulkanOptions& vk) {
-    const VulkanContext ctx(vk.device, vk.mode);
-    RenderResult r = ctx.mode() == "pipeline" ? render_pipeline(ctx, scene, options)
-                                              : render_compute(ctx, scene, options);
+    const VulkanContext& ctx = open_context(vk);
+    RenderResult r = render_on(ctx, scene, options);
     r.stats.scene_features = analyze_features(scene).names();
     r.stats.feature_mask = render_feature_mask(scene, options.all_features);
     r.stats.feature_variant = options.all_features ? "all" : "scene";

@@ -17,7 +17,8 @@ struct VulkanOptions {
 
 // Renders on the selected device in the mode the request resolves to there (RenderStats::mode
 // says which ran). Throws RuntimeError (exit code 3) for Vulkan failures, for pipeline mode on a
-// device without it, and when the validation layer reported anything (validation.h).
+// device without it, and when the validation layer reported anything (validation.h). The device
+// stays open for the next render with the same device and mode in this process.
 RenderResult render_vulkan(const FlatScene& scene, const RenderOptions& options,
                            const VulkanOptions& vk);
 
