@@ -3,20 +3,25 @@
 // bad input, 3 runtime failure (no device, out of memory, device lost).
 #include "commands.h"
 #include "util/error.h"
+#include "vulkan_rt/vulkan_renderer.h"
 
 #include <fmt/core.h>
 
 #include <vector>
 
+// Closes the Vulkan device that renders keep open (vulkan_renderer.h) when main returns, before
+// the exit-time destructors of the driver run.
+struct CloseVulkanOnReturn {
+    ~CloseVulkanOnReturn() { tp::close_vulkan_device(); }
+};
+
 int main(int argc, char** argv) {
+    const CloseVulkanOnReturn close_vulkan;
     CLI::App app{"twinpath: dual-backend (Embree CPU reference / Vulkan) path tracer"};
     app.require_subcommand(1);
     const std::vector<tp::Subcommand> commands = {
-        tp::add_render_command(app),
-        tp::add_compare_command(app),
-        tp::add_info_command(app),
-        tp::add_bench_command(app),
-        tp::add_pathdiff_command(app),
+        tp::add_render_command(app), tp::add_compare_command(app),  tp::add_info_command(app),
+        tp::add_bench_command(app),  tp::add_pathdiff_command(app),
     };
     try {
         app.parse(argc, argv);

@@ -6,7 +6,6 @@
 #include "vulkan_rt/context.h"
 #include "vulkan_rt/pipeline_renderer.h"
 
-#include <cstdlib>
 #include <memory>
 
 namespace tp {
@@ -32,12 +31,6 @@ const VulkanContext& open_context(const VulkanOptions& vk) {
         open_device.reset(); // one device at a time
         open_device = std::make_unique<VulkanContext>(vk.device, vk.mode);
         open_request = request;
-        // Close it at exit before the driver's own exit-time destructors, which were registered
-        // when the loader opened the driver (inside the constructor above) and run in reverse
-        // order of registration: left to open_device's static destructor, registered at
-        // start-up, vkDestroyDevice ran after them and crashed the NVIDIA driver (H200).
-        static const bool close_at_exit = std::atexit([] { open_device.reset(); }) == 0;
-        (void)close_at_exit;
     }
     return *open_device;
 }
@@ -68,6 +61,10 @@ RenderResult render_vulkan(const FlatScene& scene, const RenderOptions& options,
     r.stats.extra["validation_messages"] = std::to_string(ctx.instance().validation_messages());
     check_validation(ctx.instance());
     return r;
+}
+
+void close_vulkan_device() {
+    open_device.reset();
 }
 
 std::vector<DeviceInfo> list_vulkan_devices() {

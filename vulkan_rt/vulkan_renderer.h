@@ -22,6 +22,11 @@ struct VulkanOptions {
 RenderResult render_vulkan(const FlatScene& scene, const RenderOptions& options,
                            const VulkanOptions& vk);
 
+// Closes the device that render_vulkan keeps open. Call it before the process exits: the NVIDIA
+// driver registers exit-time destructors while it works (its shader compiler is loaded at the
+// first pipeline), and a device destroyed after them crashes at exit (H200, driver 580.159.04).
+void close_vulkan_device();
+
 // Every device the Vulkan loader reports; RuntimeError when there is no usable loader/driver.
 std::vector<DeviceInfo> list_vulkan_devices();
 
