@@ -54,7 +54,7 @@ local_section() {
 if ((local_sections)); then
   local_section local-ladder --ladder --backends cpu,vulkan
   local_section local-table --table --backends cpu
-  local_section local-peer --peer
+  local_section local-peer --peer --scenes cornell,bunny --width 512 --height 512
 fi
 
 for json in "${gpu_results[@]}"; do
