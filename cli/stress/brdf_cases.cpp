@@ -10,7 +10,7 @@
 //     uniformly, weight 2 ks cos_i. So the bound is the albedo times at most 2, and the
 //     *mean* weight (the directional albedo) must stay <= kd + ks = 1 within 4 SE.
 #include "stress/common.h"
-#include "stress/gpu_compute.h"
+#include "vulkan_rt/shader_dispatch.h"
 
 #include "shared/brdf.h"
 #include "stress_brdf.spv.h"
@@ -204,9 +204,9 @@ std::vector<CaseResult> brdf_cases_glsl(const VulkanContext& ctx, const Size& s)
     const auto t0 = std::chrono::steady_clock::now();
     const std::vector<BrdfInput> in = inputs(s);
     const uint32_t count = uint32_t(in.size());
-    const auto bytes =
-        run_shader(ctx, tp_spirv_stress_brdf, sizeof(tp_spirv_stress_brdf), {bytes_of(in)},
-                   {in.size() * sizeof(BrdfOutput)}, &count, sizeof(count), (count + 63) / 64);
+    const auto bytes = run_compute_shader(ctx, tp_spirv_stress_brdf, sizeof(tp_spirv_stress_brdf),
+                                          {bytes_of(in)}, {in.size() * sizeof(BrdfOutput)}, &count,
+                                          sizeof(count), (count + 63) / 64);
     std::vector<CaseResult> r = check(in, as_vector<BrdfOutput>(bytes[0]), "glsl", s);
     const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     for (CaseResult& c : r) {

@@ -8,7 +8,7 @@
 // The 1e-4 covers the rounding of the target and of t (the faces meet at the target; a farther
 // hit is another part of the mesh at least ~1e-3 of the mesh size behind).
 #include "stress/common.h"
-#include "stress/gpu_compute.h"
+#include "vulkan_rt/shader_dispatch.h"
 
 #include "cpu_ref/embree_accel.h"
 #include "scene/generators.h"
@@ -277,9 +277,9 @@ std::vector<CaseResult> watertight_cases_gpu(const VulkanContext& ctx, const Siz
                 bp.bvh_top_root = bvh.top_root;
                 bp.probe_iterations = LOOP_PROBE_ITERATIONS;
                 const auto res =
-                    run_shader(ctx, tp_spirv_stress_trace, sizeof(tp_spirv_stress_trace),
-                               {bytes_of(rays)}, {rays.size() * sizeof(StressHit)}, &bp, sizeof(bp),
-                               uint32_t(rays.size() + 63) / 64, bound);
+                    run_compute_shader(ctx, tp_spirv_stress_trace, sizeof(tp_spirv_stress_trace),
+                                       {bytes_of(rays)}, {rays.size() * sizeof(StressHit)}, &bp,
+                                       sizeof(bp), uint32_t(rays.size() + 63) / 64, bound);
                 const std::vector<StressHit> hits = as_vector<StressHit>(res[0]);
                 std::vector<Ray> again;
                 std::vector<size_t> again_index;

@@ -3,12 +3,10 @@
 // call and validation_messages() must stay 0.
 #pragma once
 
-#include "vulkan_rt/buffer.h"
-#include "vulkan_rt/context.h"
+#include "vulkan_rt/shader_dispatch.h"
 
 #include <cstddef>
 #include <cstdint>
-#include <cstring>
 #include <vector>
 
 namespace tp::test {
@@ -16,31 +14,15 @@ namespace tp::test {
 VulkanContext& gpu_context();
 uint64_t validation_messages();
 
-struct HostBytes {
-    const void* data;
-    size_t bytes;
-};
+using tp::as_vector;
+using tp::bytes_of;
+using tp::HostBytes;
 
-template <typename T>
-HostBytes bytes_of(const std::vector<T>& v) {
-    return {v.data(), v.size() * sizeof(T)};
-}
-
-// Dispatches `groups` workgroups of `spirv` with storage buffers bound in order: first
-// `device` (buffers already on the device), then the inputs (uploaded), then outputs of the
-// given sizes (zero-filled), and returns the outputs.
+// run_compute_shader (vulkan_rt/shader_dispatch.h) on gpu_context().
 std::vector<std::vector<uint8_t>> run_shader(const uint32_t* spirv, size_t spirv_bytes,
                                              const std::vector<HostBytes>& inputs,
                                              const std::vector<size_t>& output_bytes,
                                              const void* push, uint32_t push_bytes, uint32_t groups,
                                              const std::vector<const Buffer*>& device = {});
-
-// The output as an array of T.
-template <typename T>
-std::vector<T> as_vector(const std::vector<uint8_t>& bytes) {
-    std::vector<T> v(bytes.size() / sizeof(T));
-    std::memcpy(v.data(), bytes.data(), v.size() * sizeof(T));
-    return v;
-}
 
 } // namespace tp::test

@@ -1,16 +1,15 @@
-#include "stress/gpu_compute.h"
+#include "vulkan_rt/shader_dispatch.h"
 
 #include "vulkan_rt/barriers.h"
 #include "vulkan_rt/compute_program.h"
 
-namespace tp::stress {
+namespace tp {
 
-std::vector<std::vector<uint8_t>> run_shader(const VulkanContext& ctx, const uint32_t* spirv,
-                                             size_t spirv_bytes,
-                                             const std::vector<HostBytes>& inputs,
-                                             const std::vector<size_t>& output_bytes,
-                                             const void* push, uint32_t push_bytes, uint32_t groups,
-                                             const std::vector<const Buffer*>& device) {
+std::vector<std::vector<uint8_t>>
+run_compute_shader(const VulkanContext& ctx, const uint32_t* spirv, size_t spirv_bytes,
+                   const std::vector<HostBytes>& inputs, const std::vector<size_t>& output_bytes,
+                   const void* push, uint32_t push_bytes, uint32_t groups,
+                   const std::vector<const Buffer*>& device) {
     const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
                                      VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT;
@@ -48,4 +47,4 @@ std::vector<std::vector<uint8_t>> run_shader(const VulkanContext& ctx, const uin
     return result;
 }
 
-} // namespace tp::stress
+} // namespace tp
