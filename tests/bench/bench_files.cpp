@@ -14,10 +14,6 @@ std::string read_file(const std::string& path) {
     return ss.str();
 }
 
-nlohmann::json read_json(const std::string& path) {
-    return nlohmann::json::parse(read_file(path));
-}
-
 namespace {
 
 // The fields of each record: a quoted field may hold commas, newlines and doubled quotes.

@@ -12,8 +12,6 @@ namespace tp::test {
 
 std::string read_file(const std::string& path);
 
-nlohmann::json read_json(const std::string& path);
-
 struct Csv {
     std::vector<std::string> header;
     std::vector<std::map<std::string, std::string>> rows; // column name -> field

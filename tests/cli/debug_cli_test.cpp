@@ -13,15 +13,6 @@
 namespace tp::test {
 namespace {
 
-std::string twinpath(const std::string& args) {
-    return shell_quote(twinpath_bin()) + " " + args;
-}
-
-nlohmann::json read_json(const std::string& path) {
-    std::ifstream in(path);
-    return nlohmann::json::parse(in);
-}
-
 void write_json(const std::string& path, const nlohmann::json& j) {
     std::ofstream(path) << j.dump(1);
 }

@@ -23,17 +23,8 @@
 namespace tp::test {
 namespace {
 
-std::string twinpath(const std::string& args) {
-    return shell_quote(twinpath_bin()) + " " + args;
-}
-
 std::string bug_spirv(const std::string& bug) {
     return std::string(TP_BUG_SPIRV_DIR) + "/" + bug + ".spv";
-}
-
-nlohmann::json read_json(const std::string& path) {
-    std::ifstream in(path);
-    return nlohmann::json::parse(in);
 }
 
 // A logged render of `scene`: image out.exr, path log out.json.

@@ -17,15 +17,6 @@
 namespace tp::test {
 namespace {
 
-std::string twinpath(const std::string& args) {
-    return shell_quote(twinpath_bin()) + " " + args;
-}
-
-nlohmann::json read_json(const std::string& path) {
-    std::ifstream in(path);
-    return nlohmann::json::parse(in);
-}
-
 // Renders `scene` on a backend into dir/name.exr (+ .json statistics).
 ProcessResult render(const std::string& scene, const std::string& backend, const std::string& dir,
                      const std::string& name, const std::string& extra) {
@@ -172,9 +163,9 @@ TEST_CASE("pipeline mode agrees with compute mode and the CPU where the device h
                         .exit_code == 0);
             check_vulkan_stats(read_json(dir + "/rt.json"), 32ull * 32 * 256, "pipeline");
             REQUIRE(render(scene, "cpu", dir, "cpu", common + " --seed 8").exit_code == 0);
-            const ProcessResult cmp = run(twinpath(fmt::format(
-                "compare {} {} --alpha 0.01", shell_quote(dir + "/rt.exr"),
-                shell_quote(dir + "/cpu.exr"))));
+            const ProcessResult cmp =
+                run(twinpath(fmt::format("compare {} {} --alpha 0.01", shell_quote(dir + "/rt.exr"),
+                                         shell_quote(dir + "/cpu.exr"))));
             INFO(cmp.out);
             CHECK(cmp.exit_code == 0);
         }

@@ -19,15 +19,6 @@ namespace fs = std::filesystem;
 namespace tp::test {
 namespace {
 
-std::string twinpath(const std::string& args) {
-    return shell_quote(twinpath_bin()) + " " + args;
-}
-
-nlohmann::json read_json(const std::string& path) {
-    std::ifstream in(path);
-    return nlohmann::json::parse(in);
-}
-
 // A compute-mode render with the pipeline cache in `cache`; returns its statistics.
 nlohmann::json render(const std::string& scene, const std::string& dir, const std::string& name,
                       const std::string& cache, const std::string& extra, std::string* out) {

@@ -12,18 +12,7 @@
 #include <fstream>
 
 namespace tp::test {
-namespace {
-
-std::string twinpath(const std::string& args) {
-    return shell_quote(twinpath_bin()) + " " + args;
-}
-
-nlohmann::json read_json(const std::string& path) {
-    std::ifstream in(path);
-    return nlohmann::json::parse(in);
-}
-
-} // namespace
+namespace {} // namespace
 
 TEST_CASE("CPU: the specialized path loop agrees with the all-features loop on every scene",
           "[features]") {

@@ -1,25 +1,37 @@
 #include "support/test_paths.h"
 
-#include <atomic>
 #include <array>
+#include <atomic>
 #include <cstdio>
 #include <filesystem>
+#include <fstream>
 #include <stdexcept>
 #include <sys/wait.h>
 #include <unistd.h>
 
 namespace tp::test {
 
-std::string twinpath_bin() { return TWINPATH_TEST_BIN; }
-std::string scenes_dir() { return TWINPATH_TEST_SCENES; }
-std::string assets_dir() { return TWINPATH_TEST_ASSETS; }
-std::string source_dir() { return TWINPATH_TEST_SOURCE; }
-std::string glslang_validator() { return TWINPATH_TEST_GLSLANG; }
+std::string twinpath_bin() {
+    return TWINPATH_TEST_BIN;
+}
+std::string scenes_dir() {
+    return TWINPATH_TEST_SCENES;
+}
+std::string assets_dir() {
+    return TWINPATH_TEST_ASSETS;
+}
+std::string source_dir() {
+    return TWINPATH_TEST_SOURCE;
+}
+std::string glslang_validator() {
+    return TWINPATH_TEST_GLSLANG;
+}
 
 std::string temp_dir(const std::string& tag) {
     static std::atomic<int> counter{0};
-    const auto dir = std::filesystem::temp_directory_path() /
-                     ("twinpath-test-" + tag + "-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
+    const auto dir =
+        std::filesystem::temp_directory_path() /
+        ("twinpath-test-" + tag + "-" + std::to_string(getpid()) + "-" + std::to_string(counter++));
     std::filesystem::remove_all(dir);
     std::filesystem::create_directories(dir);
     return dir.string();
@@ -41,6 +53,16 @@ ProcessResult run(const std::string& command) {
     const int status = pclose(p);
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
+}
+
+std::string twinpath(const std::string& args) {
+    return shell_quote(twinpath_bin()) + " " + args;
+}
+
+nlohmann::json read_json(const std::string& path) {
+    std::ifstream in(path);
+    if (!in) throw std::runtime_error("cannot open " + path);
+    return nlohmann::json::parse(in);
 }
 
 } // namespace tp::test

@@ -1,5 +1,8 @@
-// Locations the tests need, fixed at configure time, and a helper to run the twinpath binary.
+// Locations the tests need, fixed at configure time, and helpers to run the twinpath binary
+// and read what it writes.
 #pragma once
+
+#include <nlohmann/json.hpp>
 
 #include <string>
 #include <vector>
@@ -25,5 +28,11 @@ ProcessResult run(const std::string& command);
 
 // Single-quotes s for /bin/sh.
 std::string shell_quote(const std::string& s);
+
+// The command line that runs the twinpath binary with `args` (already quoted as needed).
+std::string twinpath(const std::string& args);
+
+// A JSON file (stats, compare results, path logs); throws when it is missing or malformed.
+nlohmann::json read_json(const std::string& path);
 
 } // namespace tp::test
