@@ -57,6 +57,7 @@ Size large_size() {
     s.brdf_samples = 20000;
     s.accumulation_spp = 4000000;
     s.point_lights = 100000;
+    s.rare_spp = 8192;
     return s;
 }
 

@@ -141,30 +141,38 @@ std::vector<CaseResult> scale_cases(const Engine& e, const Size& s) {
 }
 
 // ---- dielectrics --------------------------------------------------------------------------
+// IOR 1 with tf = 1: Fresnel reflectance 0 and weight tf / 1^2 = 1, the ray goes on unchanged,
+// so the sphere must vanish. Light reaches the floor through it only along BSDF-sampled paths
+// (shadow rays stop at any surface), which get full weight after the specular vertex: the
+// estimator stays unbiased for area lights and the environment. A point light seen through a
+// specular surface is a path no unidirectional estimator can sample (Veach 1997, sec. 8.3.3),
+// so this scene has none. Where the floor sees the ceiling light through the sphere, that
+// light arrives only when the cosine-sampled direction hits it (p ~ 1.8 %) and the path
+// survives roulette at its third vertex (q = 0.5): ~0.9 % of the samples carry it, with
+// value ~6. Both renders therefore take rare_spp samples (docs/stress.md, "Rare
+// events and the per-pixel test"); at s.spp = 512 the Welch test fails on pixels that drew none.
+CaseResult ior1_sphere_case(const Engine& e, const Size& s) {
+    return timed(make_case("dielectric", "IOR 1.0 sphere vanishes", e,
+                           "consistent with the same scene without the sphere (no point light: "
+                           "a delta light through a delta surface cannot be sampled)"),
+                 [&](CaseResult& c) {
+                     Scene without = reference_scene(s.image, s.rare_spp);
+                     without.lights.clear();
+                     Scene with = without;
+                     const uint32_t m = add_material(with, "ior1", glass(1.0f));
+                     const uint32_t mesh = add_mesh(with, flat_sphere(3));
+                     add_object(
+                         with, "ior1 sphere", mesh, m,
+                         glm::scale(glm::translate(I4, vec3(0.45f, 0.45f, 0.9f)), vec3(0.4f)));
+                     const Rendered a = render(e, flat(without), 11);
+                     const Rendered b = render(e, flat(with), 12);
+                     expect_consistent(c, a, b, s.alpha);
+                 });
+}
+
 std::vector<CaseResult> dielectric_cases(const Engine& e, const Size& s) {
     std::vector<CaseResult> out;
-    // IOR 1 with tf = 1: Fresnel reflectance 0 and weight tf / 1^2 = 1, the ray goes on
-    // unchanged, so the sphere must vanish. Light reaches the floor through it only along
-    // BSDF-sampled paths (shadow rays stop at any surface), which get full weight after the
-    // specular vertex: the estimator stays unbiased for area lights and the environment. A
-    // point light seen through a specular surface is a path no unidirectional estimator can
-    // sample (Veach 1997, sec. 8.3.3), so this scene has none.
-    out.push_back(
-        timed(make_case("dielectric", "IOR 1.0 sphere vanishes", e,
-                        "consistent with the same scene without the sphere (no point light: a "
-                        "delta light through a delta surface cannot be sampled)"),
-              [&](CaseResult& c) {
-                  Scene without = reference_scene(s.image, s.spp);
-                  without.lights.clear();
-                  Scene with = without;
-                  const uint32_t m = add_material(with, "ior1", glass(1.0f));
-                  const uint32_t mesh = add_mesh(with, flat_sphere(3));
-                  add_object(with, "ior1 sphere", mesh, m,
-                             glm::scale(glm::translate(I4, vec3(0.45f, 0.45f, 0.9f)), vec3(0.4f)));
-                  const Rendered a = render(e, flat(without), 11);
-                  const Rendered b = render(e, flat(with), 12);
-                  expect_consistent(c, a, b, s.alpha);
-              }));
+    out.push_back(ior1_sphere_case(e, s));
     uint32_t seed = 20;
     for (const float ior : {1.0001f, 1.31f, 1.5f, 3.0f}) {
         out.push_back(
@@ -378,6 +386,22 @@ Scene closed_box_scene(const Scene& base, bool lit) {
 }
 
 // ---- lights -------------------------------------------------------------------------------
+// A closed box with a strong point light and an emissive quad inside: nothing may leak out.
+// Lights are chosen in proportion to their power, so with the inner lights (point light 100,
+// quad 50) the scene's own point light (2) is chosen for next-event estimation with
+// probability 0.018 instead of ~0.27, and the pixels it lights (the reference sphere's
+// highlight) get their value from ~2 % of the samples. Both renders therefore take rare_spp
+// samples (docs/stress.md, "Rare events and the per-pixel test").
+CaseResult closed_box_lights_case(const Engine& e, const Size& s) {
+    return timed(make_case("lights", "lights inside a closed box", e,
+                           "consistent with the same box without the lights (no leak)"),
+                 [&](CaseResult& c) {
+                     const Scene base = reference_scene(s.image, s.rare_spp);
+                     expect_consistent(c, render(e, flat(closed_box_scene(base, false)), 202),
+                                       render(e, flat(closed_box_scene(base, true)), 203), s.alpha);
+                 });
+}
+
 std::vector<CaseResult> light_cases(const Engine& e, const Size& s) {
     std::vector<CaseResult> out;
     const Scene base = reference_scene(s.image, s.spp);
@@ -399,14 +423,7 @@ std::vector<CaseResult> light_cases(const Engine& e, const Size& s) {
                             c.pass = c.nan == 0 && mx < 10.0;
                             c.measured = fmt::format("brightest pixel {:.4g}", mx);
                         }));
-    // A closed box with a strong point light and an emissive quad inside: nothing may leak out.
-    out.push_back(timed(make_case("lights", "lights inside a closed box", e,
-                                  "consistent with the same box without the lights (no leak)"),
-                        [&](CaseResult& c) {
-                            expect_consistent(
-                                c, render(e, flat(closed_box_scene(base, false)), 202),
-                                render(e, flat(closed_box_scene(base, true)), 203), s.alpha);
-                        }));
+    out.push_back(closed_box_lights_case(e, s));
     // N point lights at the reference light's position whose intensities (random, positive) sum
     // to its intensity: the same irradiance everywhere, chosen through an alias table of N.
     out.push_back(timed(make_case("lights", fmt::format("{} point lights", s.point_lights), e,

@@ -55,6 +55,10 @@ struct Size {
     uint32_t brdf_samples = 1000;        // per configuration of the BRDF sweep
     uint64_t accumulation_spp = 1000000; // the constant pixel
     uint32_t point_lights = 10000;
+    // Both renders of the IOR 1.0 sphere and of the lit closed box, whose variants' pixels get a
+    // large part of their value from events of probability ~1 % per sample (docs/stress.md,
+    // "Rare events and the per-pixel test"): enough samples that each pixel sees ~50 or more.
+    uint32_t rare_spp = 2048;
     double alpha = 1e-3; // per comparison; see compare_consistent()
 };
 Size small_size();
@@ -63,6 +67,9 @@ Size large_size();
 // ---- the cases (cases_*.cpp) ----------------------------------------------------------------
 std::vector<CaseResult> scale_cases(const Engine& e, const Size& s);
 std::vector<CaseResult> dielectric_cases(const Engine& e, const Size& s);
+// Two cases of the lists, alone (their regression test runs them at full size).
+CaseResult ior1_sphere_case(const Engine& e, const Size& s);
+CaseResult closed_box_lights_case(const Engine& e, const Size& s);
 std::vector<CaseResult> degenerate_cases(const Engine& e, const Size& s);
 std::vector<CaseResult> light_cases(const Engine& e, const Size& s);
 std::vector<CaseResult> shading_normal_cases(const Engine& e, const Size& s);
