@@ -6,6 +6,7 @@
 #include "compare/text_file.h"
 #include "image/png_io.h"
 #include "util/error.h"
+#include "util/markup_escape.h"
 
 #include <fmt/format.h>
 
@@ -17,29 +18,6 @@ namespace tp {
 namespace {
 
 const char* const kChannel[3] = {"R", "G", "B"};
-
-std::string html_escape(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-        case '&':
-            out += "&amp;";
-            break;
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        default:
-            out += c;
-        }
-    }
-    return out;
-}
 
 // Per pixel, the channel value of largest magnitude, sign kept.
 double signed_max(double r, double g, double b) {
@@ -164,8 +142,8 @@ void write_report(const std::string& dir, const CompareResult& r, const RgbImage
     write_png(base + "tiles.png", w, h, rgb);
 
     const std::vector<Figure> figures = {
-        {"a.png", "A", html_escape(a.path)},
-        {"b.png", "B", html_escape(b.path)},
+        {"a.png", "A", markup_escape(a.path)},
+        {"b.png", "B", markup_escape(b.path)},
         {"difference.png", "A &minus; B",
          fmt::format("mean over R, G, B; full colour at &plusmn;{:.3g}", d_scale)},
         {"z.png", "per-pixel z",

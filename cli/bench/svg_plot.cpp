@@ -1,5 +1,7 @@
 #include "bench/svg_plot.h"
 
+#include "util/markup_escape.h"
+
 #include <fmt/format.h>
 
 #include <algorithm>
@@ -14,29 +16,6 @@ constexpr double kLeft = 80, kRight = 230, kTop = 40, kBottom = 60;
 // Distinguishable on white and for the common colour-vision deficiencies (Okabe & Ito 2008).
 constexpr const char* kColors[] = {"#0072B2", "#D55E00", "#009E73", "#CC79A7",
                                    "#E69F00", "#56B4E9", "#000000", "#F0E442"};
-
-std::string xml_escape(const std::string& s) {
-    std::string out;
-    for (char c : s) {
-        switch (c) {
-        case '&':
-            out += "&amp;";
-            break;
-        case '<':
-            out += "&lt;";
-            break;
-        case '>':
-            out += "&gt;";
-            break;
-        case '"':
-            out += "&quot;";
-            break;
-        default:
-            out += c;
-        }
-    }
-    return out;
-}
 
 // Whole decades [lo, hi] of log10 that cover the values (at least one decade).
 struct Decades {
@@ -76,7 +55,7 @@ std::string svg_loglog(const LogLogPlot& plot) {
                     "viewBox=\"0 0 {0} {1}\" font-family=\"sans-serif\" font-size=\"12\">\n"
                     "<rect width=\"{0}\" height=\"{1}\" fill=\"white\"/>\n"
                     "<text x=\"{2}\" y=\"24\" font-size=\"15\">{3}</text>\n",
-                    kWidth, kHeight, kLeft, xml_escape(plot.title));
+                    kWidth, kHeight, kLeft, markup_escape(plot.title));
     for (int k = dx.lo; k <= dx.hi; ++k) {
         const double x = X(std::pow(10.0, k));
         svg += fmt::format("<line x1=\"{0:.1f}\" y1=\"{1}\" x2=\"{0:.1f}\" y2=\"{2}\" "
@@ -95,10 +74,10 @@ std::string svg_loglog(const LogLogPlot& plot) {
                        "stroke=\"black\"/>\n",
                        kLeft, kTop, pw, ph);
     svg += fmt::format("<text x=\"{}\" y=\"{}\" text-anchor=\"middle\">{}</text>\n", kLeft + pw / 2,
-                       kHeight - 16, xml_escape(plot.x_label));
+                       kHeight - 16, markup_escape(plot.x_label));
     svg += fmt::format("<text transform=\"translate(22 {}) rotate(-90)\" "
                        "text-anchor=\"middle\">{}</text>\n",
-                       kTop + ph / 2, xml_escape(plot.y_label));
+                       kTop + ph / 2, markup_escape(plot.y_label));
     for (double g : plot.guides) {
         if (!(g > 0)) continue;
         svg += fmt::format("<line x1=\"{0}\" y1=\"{1:.1f}\" x2=\"{2}\" y2=\"{1:.1f}\" "
@@ -114,12 +93,12 @@ std::string svg_loglog(const LogLogPlot& plot) {
             if (x > 0 && y > 0) pts += fmt::format("{:.1f},{:.1f} ", X(x), Y(y));
         svg += fmt::format("<polyline fill=\"none\" stroke=\"{}\" stroke-width=\"2\" "
                            "points=\"{}\"><title>{}</title></polyline>\n",
-                           color, pts, xml_escape(s.label));
+                           color, pts, markup_escape(s.label));
         const double ly = kTop + 14 + 20 * double(i);
         svg += fmt::format("<line x1=\"{0}\" y1=\"{1}\" x2=\"{2}\" y2=\"{1}\" stroke=\"{3}\" "
                            "stroke-width=\"2\"/>\n<text x=\"{4}\" y=\"{5}\">{6}</text>\n",
                            kLeft + pw + 40, ly, kLeft + pw + 64, color, kLeft + pw + 70, ly + 4,
-                           xml_escape(s.label));
+                           markup_escape(s.label));
     }
     svg += "</svg>\n";
     return svg;

@@ -9,18 +9,7 @@ if(NOT SPIRV_VAL OR NOT SPIRV_OPT)
   message("spirv-val or spirv-opt not found (Debian: spirv-tools): skipped")
   return()
 endif()
-set(include_flags)
-foreach(dir IN LISTS INCLUDES)
-  list(APPEND include_flags -I${dir})
-endforeach()
-get_filename_component(out_dir ${OUTPUT} DIRECTORY)
-file(MAKE_DIRECTORY ${out_dir})
-execute_process(
-  COMMAND ${GLSLANG} --quiet --target-env vulkan1.2 ${include_flags} -o ${OUTPUT} ${SOURCE}
-  RESULT_VARIABLE compiled)
-if(NOT compiled EQUAL 0)
-  message(FATAL_ERROR "glslangValidator failed on ${SOURCE}")
-endif()
+include(${CMAKE_CURRENT_LIST_DIR}/spirv_compile.cmake)
 execute_process(
   COMMAND ${SPIRV_OPT} --target-env=vulkan1.2 --scalar-block-layout
           --set-spec-const-default-value "0:${FEATURES}" --freeze-spec-const
