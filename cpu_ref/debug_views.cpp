@@ -27,12 +27,7 @@ PixelAov CpuDebugViews::primary_aov(const Ray& ray) const {
 vec3 CpuDebugViews::radiance(uint32_t x, uint32_t y, uint32_t sample_index) const {
     const RenderParams& P = access_.scene().params;
     const RngKey key = rng_key(P.seed, y * P.camera.width + x, sample_index);
-    Ray ray;
-    ray.origin = P.camera.eye;
-    ray.dir = camera_direction(P.camera, float(x) + rng_get(key, RNG_PIXEL_X),
-                               float(y) + rng_get(key, RNG_PIXEL_Y));
-    ray.tmax = FLOAT_MAX;
-    ray.pad0 = 0u;
+    const Ray ray = camera_ray(P.camera, key, x, y);
     if (integrator_ == INTEGRATOR_COST) {
         const auto t0 = std::chrono::steady_clock::now();
         const Hit hit = accel_.intersect(ray);

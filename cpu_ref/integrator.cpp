@@ -83,11 +83,7 @@ vec3 CpuIntegrator::trace_path(uint32_t x, uint32_t y, uint32_t sample_index, Ra
     const RenderParams& P = s.params;
     const RngKey key = rng_key(P.seed, y * P.camera.width + x, sample_index);
 
-    Ray ray;
-    ray.origin = P.camera.eye;
-    ray.dir = camera_direction(P.camera, float(x) + rng_get(key, RNG_PIXEL_X),
-                               float(y) + rng_get(key, RNG_PIXEL_Y));
-    ray.tmax = FLOAT_MAX;
+    Ray ray = camera_ray(P.camera, key, x, y);
     ++rays.camera;
 
     vec3 L(0.0f), T(1.0f);

@@ -62,12 +62,7 @@ PixelAov primary_aov(Ray ray) {
 // the path loop jitters it, so the views are antialiased like the image.
 vec3 debug_view_radiance(uint x, uint y, uint sample_index) {
     RngKey key = rng_key(params.seed, y * params.camera.width + x, sample_index);
-    Ray ray;
-    ray.origin = params.camera.eye;
-    ray.dir = camera_direction(params.camera, float(x) + rng_get(key, RNG_PIXEL_X),
-                               float(y) + rng_get(key, RNG_PIXEL_Y));
-    ray.tmax = FLOAT_MAX;
-    ray.pad0 = 0u;
+    Ray ray = camera_ray(params.camera, key, x, y);
 #ifdef TP_TRACE_COUNTS
     g_trace_nodes = 0u;
     g_trace_triangles = 0u;

@@ -29,12 +29,7 @@ struct RayCounts {
 vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
     RngKey key = rng_key(params.seed, y * params.camera.width + x, sample_index);
 
-    Ray ray;
-    ray.origin = params.camera.eye;
-    ray.dir = camera_direction(params.camera, float(x) + rng_get(key, RNG_PIXEL_X),
-                               float(y) + rng_get(key, RNG_PIXEL_Y));
-    ray.tmax = FLOAT_MAX;
-    ray.pad0 = 0u;
+    Ray ray = camera_ray(params.camera, key, x, y);
     ++rays.camera;
 
     vec3 L = vec3(0.0f);

@@ -10,8 +10,10 @@
 #define TP_SHARED_PATH_H
 
 #include "brdf.h"
+#include "camera.h"
 #include "lights.h"
 #include "offset.h"
+#include "rng.h"
 
 TP_NAMESPACE_BEGIN
 
@@ -54,6 +56,19 @@ inline Ray spawn_ray(vec3 p, vec3 ng, vec3 d) {
     Ray r;
     r.origin = offset_ray_origin(p, dot(d, ng) > 0.0f ? ng : -ng);
     r.dir = d;
+    r.tmax = FLOAT_MAX;
+    r.pad0 = 0u;
+    return r;
+}
+
+// The camera ray of one path: through pixel (x, y) jittered by the path's first two random
+// numbers (rng.h), from the pinhole (camera.h). The path loops and the debug views of both
+// engines start here, so a (seed, pixel, sample) names the same ray everywhere.
+inline Ray camera_ray(Camera cam, RngKey key, uint x, uint y) {
+    Ray r;
+    r.origin = cam.eye;
+    r.dir = camera_direction(cam, float(x) + rng_get(key, RNG_PIXEL_X),
+                             float(y) + rng_get(key, RNG_PIXEL_Y));
     r.tmax = FLOAT_MAX;
     r.pad0 = 0u;
     return r;
