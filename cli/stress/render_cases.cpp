@@ -101,6 +101,21 @@ void expect_uniform(CaseResult& c, const Rendered& r, double expected, double to
     c.measured = fmt::format("worst pixel relative error {:.3g} (allowed {:.0e})", worst, tol);
 }
 
+// A group's reference render (seed `seed`); when it throws, `failed` gets the one case that
+// says so and the group reports only that.
+bool render_reference(const Engine& e, const Scene& base, uint32_t seed, const char* group,
+                      const char* name, Rendered& ref, std::vector<CaseResult>& failed) {
+    try {
+        ref = render(e, flat(base), seed);
+        return true;
+    } catch (const std::exception& ex) {
+        CaseResult c = make_case(group, name, e, "renders");
+        c.measured = std::string("threw: ") + ex.what();
+        failed = {c};
+        return false;
+    }
+}
+
 } // namespace
 
 // ---- scale and position -------------------------------------------------------------------
@@ -108,13 +123,7 @@ std::vector<CaseResult> scale_cases(const Engine& e, const Size& s) {
     std::vector<CaseResult> out;
     const Scene base = reference_scene(s.image, s.spp);
     Rendered ref;
-    try {
-        ref = render(e, flat(base), 1);
-    } catch (const std::exception& ex) {
-        CaseResult c = make_case("scale", "unscaled reference", e, "renders");
-        c.measured = std::string("threw: ") + ex.what();
-        return {c};
-    }
+    if (!render_reference(e, base, 1, "scale", "unscaled reference", ref, out)) return out;
     struct Variant {
         const char* name;
         float scale;
@@ -296,13 +305,7 @@ std::vector<CaseResult> degenerate_cases(const Engine& e, const Size& s) {
     std::vector<CaseResult> out;
     const Scene base = reference_scene(s.image, s.spp);
     Rendered ref;
-    try {
-        ref = render(e, flat(base), 101);
-    } catch (const std::exception& ex) {
-        CaseResult c = make_case("degenerate", "reference", e, "renders");
-        c.measured = std::string("threw: ") + ex.what();
-        return {c};
-    }
+    if (!render_reference(e, base, 101, "degenerate", "reference", ref, out)) return out;
     const std::string consistent =
         "consistent with the reference scene, no NaN/Inf (the geometry covers the same surface "
         "or none)";
