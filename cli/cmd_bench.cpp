@@ -78,6 +78,9 @@ void validate(const BenchOptions& o) {
         if (v < 1) input_error("--table-spp: sample counts start at 1, got {}", v);
     if (o.peer_spp < 2) input_error("--peer-spp must be at least 2, got {}", o.peer_spp);
     if (o.peer_threads.empty()) input_error("--peer-threads must not be empty");
+    if (o.pipeline_stats && !o.specialization)
+        input_error("--pipeline-stats goes with --specialization (the statistics of both "
+                    "variants' pipelines)");
     if (o.scenes.empty()) input_error("--scenes must not be empty");
 }
 
@@ -197,8 +200,10 @@ json result_header(const BenchRun& run) {
     const BenchOptions& o = run.o;
     json sections = json::array();
     std::string names;
-    for (const auto& [on, name] :
-         {std::pair{o.ladder, "ladder"}, {o.table, "table"}, {o.peer, "peer"}, {o.specialization, "specialization"}})
+    for (const auto& [on, name] : {std::pair{o.ladder, "ladder"},
+                                   {o.table, "table"},
+                                   {o.peer, "peer"},
+                                   {o.specialization, "specialization"}})
         if (on) {
             sections.push_back(name);
             names += (names.empty() ? "" : ", ") + std::string(name);
@@ -237,6 +242,7 @@ json result_header(const BenchRun& run) {
           {"fixed_depth", o.table_fixed_depth}}},
         {"spec_spp", o.spec_spp},
         {"spec_rounds", o.spec_rounds},
+        {"pipeline_stats", o.pipeline_stats},
         {"peer", {{"spp", o.peer_spp}, {"threads", o.peer_threads}, {"binary", o.peer_binary}}},
         {"assets", run.assets_dir},
         {"cache", run.cache_dir}};
@@ -389,6 +395,9 @@ Subcommand add_bench_command(CLI::App& app) {
     c->add_option("--spec-rounds", o.spec_rounds, "Specialization: alternating rounds per variant")
         ->check(CLI::Range(1u, 100u))
         ->capture_default_str();
+    c->add_flag("--pipeline-stats", o.pipeline_stats,
+                "Specialization: the Vulkan driver's statistics of both variants' pipelines "
+                "(register counts, ...; docs/gpu.md)");
     c->add_option("--scenes", o.scenes, "Scenes: " + catalogue_names() + ", or .json/.obj files")
         ->delimiter(',')
         ->capture_default_str();

@@ -36,6 +36,7 @@ struct RenderArgs {
     std::string eye, target, up;
     std::optional<float> fov;
     std::string stats, png;
+    std::string pipeline_stats;     // --pipeline-stats FILE (docs/gpu.md)
     std::string features = "scene"; // --features: scene (specialized) or all
     // Debugging (docs/debugging.md).
     std::string aov, debug_pixel, debug_log, integrator = "path";
@@ -151,6 +152,12 @@ int run_render(const RenderArgs& a) {
     check_output_path(out, "-o");
     if (!a.png.empty()) check_output_path(a.png, "--png");
     if (!a.stats.empty()) check_output_path(a.stats, "--stats");
+    if (!a.pipeline_stats.empty()) {
+        if (a.backend != "vulkan")
+            input_error("--pipeline-stats reports the Vulkan driver's pipelines: use --backend "
+                        "vulkan");
+        check_output_path(a.pipeline_stats, "--pipeline-stats");
+    }
     if (debug.log) check_output_path(a.debug_log, "--debug-log");
 
     ProgressBar bar(fmt::format("render {}", a.backend));
@@ -169,6 +176,7 @@ int run_render(const RenderArgs& a) {
         VulkanOptions vk;
         vk.device = a.device;
         vk.mode = a.vk_mode;
+        vk.pipeline_statistics = !a.pipeline_stats.empty();
         result = render_vulkan(flat, opt, vk);
     }
     result.stats.scene = scene.path;
@@ -207,6 +215,7 @@ int run_render(const RenderArgs& a) {
                        result.debug.dropped);
     }
     if (!a.stats.empty()) write_stats_json(a.stats, result.stats);
+    if (!a.pipeline_stats.empty()) write_pipeline_stats_json(a.pipeline_stats, result.stats);
     const RenderStats& s = result.stats;
     fmt::print("{}: {}x{} {} spp on {} in {:.2f} s ({:.2f} Mrays/s), {} NaN/Inf samples -> {}\n",
                scene.path, s.width, s.height, s.spp, s.device, s.wall_time_s,
@@ -245,6 +254,9 @@ Subcommand add_render_command(CLI::App& app) {
         ->check(CLI::Range(1e-3f, 179.0f));
     c->add_option("--stats", a->stats, "Write render statistics as JSON");
     c->add_option("--png", a->png, "Write a tone-mapped sRGB PNG preview");
+    c->add_option("--pipeline-stats", a->pipeline_stats,
+                  "Vulkan: write the driver's statistics of the render pipeline (register "
+                  "counts, ...) as JSON (docs/gpu.md)");
     c->add_option("--features", a->features,
                   "Path loop: scene (specialized to the scene's features) or all (every feature)")
         ->check(CLI::IsMember({"scene", "all"}));

@@ -1,12 +1,12 @@
 #include "vulkan_rt/compute_program.h"
 
 #include "shared/features.h"
+#include "vulkan_rt/pipeline_report.h"
 #include "vulkan_rt/specialization.h"
 #include "vulkan_rt/vk_error.h"
 
 #include <chrono>
 #include <memory>
-
 #include <vector>
 
 namespace tp {
@@ -52,6 +52,9 @@ ComputeProgram::ComputeProgram(const VulkanContext& ctx, const uint32_t* spirv, 
         vkDestroyShaderModule(device_, module, nullptr);
         throw;
     }
+    PipelineReporter reporter(ctx, {VK_SHADER_STAGE_COMPUTE_BIT});
+    ci.pNext = reporter.chain(nullptr);
+    ci.flags = reporter.flags();
     const auto t0 = std::chrono::steady_clock::now();
     const VkResult r = vkCreateComputePipelines(device_, cache ? cache->handle() : VK_NULL_HANDLE,
                                                 1, &ci, nullptr, &pipeline_);
@@ -62,6 +65,12 @@ ComputeProgram::ComputeProgram(const VulkanContext& ctx, const uint32_t* spirv, 
             std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         cache->save();
         cache_use_ = cache->use();
+    }
+    try {
+        report_ = reporter.report(pipeline_);
+    } catch (...) {
+        vkDestroyPipeline(device_, pipeline_, nullptr);
+        throw;
     }
 }
 

@@ -1,9 +1,11 @@
 // A compute pipeline from embedded SPIR-V whose descriptor set 0 is `binding_count` storage
 // buffers (bindings 0..n-1) and whose push constants are one block of `push_bytes` bytes.
 // Render shaders get the scene's feature mask as a specialization constant (features.glsl) and
-// are compiled through the on-disk pipeline cache (pipeline_cache.h).
+// are compiled through the on-disk pipeline cache (pipeline_cache.h). The driver's report on the
+// pipeline (creation feedback, statistics on request) is kept (pipeline_report.h).
 #pragma once
 
+#include "render/stats.h"
 #include "vulkan_rt/barriers.h"
 #include "vulkan_rt/buffer.h"
 #include "vulkan_rt/context.h"
@@ -36,12 +38,15 @@ class ComputeProgram {
 
     // The pipeline cache's part in creating this pipeline (empty file: not cached).
     const PipelineCacheUse& cache_use() const { return cache_use_; }
+    // What the driver said about creating it (pipeline_report.h).
+    const PipelineReport& report() const { return report_; }
 
   private:
     VkDevice device_;
     PipelineBindings bindings_;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
     PipelineCacheUse cache_use_;
+    PipelineReport report_;
 };
 
 } // namespace tp

@@ -38,6 +38,7 @@ class ComputeTracer : public Tracer {
 
     const char* mode() const override { return "compute"; }
     const PipelineCacheUse& cache_use() const { return program_.cache_use(); }
+    const PipelineReport& report() const { return program_.report(); }
     VkPipelineStageFlags shader_stage() const override {
         return VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
     }
@@ -92,6 +93,7 @@ RenderResult render_compute(const VulkanContext& ctx, const FlatScene& scene,
     ComputeTracer tracer(ctx, bvh, options.debug.active() || debug_spirv_overridden(),
                          render_feature_mask(scene, options.all_features));
     add_cache_stats(tracer.cache_use(), accel.extra);
+    accel.pipeline = tracer.report();
     return render_batches(ctx, scene, options, sb, tracer, accel);
 }
 

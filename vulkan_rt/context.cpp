@@ -101,8 +101,9 @@ std::vector<DeviceInfo> VulkanInstance::devices() const {
     return list;
 }
 
-VulkanContext::VulkanContext(const std::string& selector, const std::string& vk_mode)
-    : instance_(std::make_unique<VulkanInstance>()) {
+VulkanContext::VulkanContext(const std::string& selector, const std::string& vk_mode,
+                             bool pipeline_statistics)
+    : instance_(std::make_unique<VulkanInstance>()), statistics_requested_(pipeline_statistics) {
     const std::vector<DeviceInfo> devices = instance_->devices();
     info_ = select_device(devices, selector);
     mode_ = resolve_vk_mode(vk_mode, info_);
@@ -142,17 +143,29 @@ VulkanContext::VulkanContext(const std::string& selector, const std::string& vk_
     rt.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR;
     rt.pNext = &as;
     rt.rayTracingPipeline = VK_TRUE;
+    // Statistics make the driver keep what it would otherwise discard (and some drivers bypass
+    // their caches), so they are enabled only on request.
+    pipeline_statistics_ = pipeline_statistics && info_.caps.pipeline_executable_info;
+    VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR exec{};
+    exec.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR;
+    exec.pNext = ray_tracing ? &rt : nullptr;
+    exec.pipelineExecutableInfo = VK_TRUE;
     VkPhysicalDeviceVulkan12Features f12{};
     f12.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
-    f12.pNext = ray_tracing ? &rt : nullptr;
+    f12.pNext = pipeline_statistics_ ? &exec : exec.pNext;
     f12.scalarBlockLayout = VK_TRUE;
     f12.bufferDeviceAddress = ray_tracing ? VK_TRUE : VK_FALSE;
     VkPhysicalDeviceFeatures2 features{};
     features.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_FEATURES_2;
     features.pNext = &f12;
     features.features.shaderFloat64 = VK_TRUE;
-    const std::vector<const char*> no_extensions;
-    const std::vector<const char*>& extensions = ray_tracing ? pipeline_extensions() : no_extensions;
+    std::vector<const char*> extensions;
+    if (ray_tracing) extensions = pipeline_extensions();
+    // Core in Vulkan 1.3, but the instance asks for 1.2: enabled as the extension.
+    creation_feedback_ = info_.caps.has(VK_EXT_PIPELINE_CREATION_FEEDBACK_EXTENSION_NAME);
+    if (creation_feedback_) extensions.push_back(VK_EXT_PIPELINE_CREATION_FEEDBACK_EXTENSION_NAME);
+    if (pipeline_statistics_)
+        extensions.push_back(VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
     VkDeviceCreateInfo dci{};
     dci.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
     dci.pNext = &features;

@@ -1,6 +1,7 @@
 // The Vulkan instance (with the validation layer when requested, validation.h) and, for
 // rendering, one logical device with one compute queue; in pipeline mode with the ray-tracing
-// extensions and features enabled.
+// extensions and features enabled; with VK_EXT_pipeline_creation_feedback where the device has
+// it, and VK_KHR_pipeline_executable_properties when pipeline statistics are asked for.
 #pragma once
 
 #include "vulkan_rt/device_info.h"
@@ -40,8 +41,10 @@ class VulkanInstance {
 class VulkanContext {
   public:
     // Opens the device that `selector` names (device_info.h, select_device) for the mode that
-    // `vk_mode` (--vk-mode) resolves to there (resolve_vk_mode).
-    explicit VulkanContext(const std::string& selector, const std::string& vk_mode = "compute");
+    // `vk_mode` (--vk-mode) resolves to there (resolve_vk_mode). `pipeline_statistics`
+    // (--pipeline-stats): enable VK_KHR_pipeline_executable_properties where the device has it.
+    explicit VulkanContext(const std::string& selector, const std::string& vk_mode = "compute",
+                           bool pipeline_statistics = false);
     ~VulkanContext();
     VulkanContext(const VulkanContext&) = delete;
     VulkanContext& operator=(const VulkanContext&) = delete;
@@ -54,6 +57,12 @@ class VulkanContext {
     VkQueue queue() const { return queue_; }
     const VkPhysicalDeviceLimits& limits() const { return limits_; }
     uint32_t timestamp_valid_bits() const { return timestamp_bits_; }
+    // VK_EXT_pipeline_creation_feedback is enabled (pipeline_report.h).
+    bool creation_feedback() const { return creation_feedback_; }
+    // Pipeline statistics were asked for, and VK_KHR_pipeline_executable_properties is enabled
+    // to give them (pipeline_report.h).
+    bool statistics_requested() const { return statistics_requested_; }
+    bool pipeline_statistics() const { return pipeline_statistics_; }
 
     // A memory type allowed by `type_bits` with all of `required`, preferring one that also
     // has `preferred`; throws RuntimeError when there is none.
@@ -74,6 +83,9 @@ class VulkanContext {
     VkDevice device_ = VK_NULL_HANDLE;
     uint32_t queue_family_ = 0;
     uint32_t timestamp_bits_ = 0;
+    bool creation_feedback_ = false;
+    bool statistics_requested_ = false;
+    bool pipeline_statistics_ = false;
     VkQueue queue_ = VK_NULL_HANDLE;
     VkCommandPool pool_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;

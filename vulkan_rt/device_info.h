@@ -23,6 +23,9 @@ struct DeviceCaps {
     bool ray_tracing_pipeline = false;   // VkPhysicalDeviceRayTracingPipelineFeaturesKHR
     bool buffer_device_address = false;  // Vulkan 1.2: SBT, geometry and instance addresses
     bool subgroup_arithmetic_raygen = false;
+    // VK_KHR_pipeline_executable_properties with its pipelineExecutableInfo feature: the
+    // driver's statistics of compiled pipelines (`--pipeline-stats`).
+    bool pipeline_executable_info = false;
 
     bool has(const char* extension) const;
 };

@@ -74,8 +74,14 @@ DeviceInfo query_device(VkPhysicalDevice device, uint32_t index) {
         as.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_ACCELERATION_STRUCTURE_FEATURES_KHR;
         VkPhysicalDeviceRayTracingPipelineFeaturesKHR rt{};
         rt.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_RAY_TRACING_PIPELINE_FEATURES_KHR;
+        VkPhysicalDevicePipelineExecutablePropertiesFeaturesKHR exec{};
+        exec.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PIPELINE_EXECUTABLE_PROPERTIES_FEATURES_KHR;
         VkPhysicalDeviceVulkan12Features f12{};
         f12.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_VULKAN_1_2_FEATURES;
+        if (caps.has(VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME)) {
+            exec.pNext = f12.pNext;
+            f12.pNext = &exec;
+        }
         if (caps.has(VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME)) {
             as.pNext = f12.pNext;
             f12.pNext = &as;
@@ -93,6 +99,7 @@ DeviceInfo query_device(VkPhysicalDevice device, uint32_t index) {
         caps.buffer_device_address = f12.bufferDeviceAddress == VK_TRUE;
         caps.acceleration_structure = as.accelerationStructure == VK_TRUE;
         caps.ray_tracing_pipeline = rt.rayTracingPipeline == VK_TRUE;
+        caps.pipeline_executable_info = exec.pipelineExecutableInfo == VK_TRUE;
     }
 
     uint32_t nq = 0;

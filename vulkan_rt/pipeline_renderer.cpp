@@ -38,6 +38,7 @@ class PipelineTracer : public Tracer {
 
     const char* mode() const override { return "pipeline"; }
     const PipelineCacheUse& cache_use() const { return program_.cache_use(); }
+    const PipelineReport& report() const { return program_.report(); }
     VkPipelineStageFlags shader_stage() const override {
         return VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR;
     }
@@ -83,6 +84,7 @@ RenderResult render_pipeline(const VulkanContext& ctx, const FlatScene& scene,
     PipelineTracer tracer(ctx, rt, as.tlas(), options.debug.active() || debug_spirv_overridden(),
                           render_feature_mask(scene, options.all_features));
     add_cache_stats(tracer.cache_use(), accel.extra);
+    accel.pipeline = tracer.report();
     return render_batches(ctx, scene, options, sb, tracer, accel);
 }
 

@@ -254,6 +254,7 @@ RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
     st.build_time_s = accel.build_time_s;
     st.accel_bytes = accel.bytes;
     for (const auto& [key, value] : accel.extra) st.extra[key] = value;
+    st.pipeline = accel.pipeline;
 
     BatchSession session(ctx, scene, scene_buffers, tracer, options.debug);
     BatchPlanner planner(st.width, st.height, scene.spp, kTargetSubmitSeconds);

@@ -48,6 +48,7 @@ struct AccelStats {
     double build_time_s = 0;
     uint64_t bytes = 0; // RenderStats::accel_bytes
     std::map<std::string, std::string> extra;
+    PipelineReport pipeline; // the render pipeline's (RenderStats::pipeline)
 };
 
 // The scene's RenderParams with the render's seed (uploaded to BINDING_PARAMS).

@@ -2,12 +2,12 @@
 
 #include "shaders/interface.h"
 #include "shaders/rt_interface.h"
+#include "vulkan_rt/pipeline_report.h"
 #include "vulkan_rt/sbt_layout.h"
 #include "vulkan_rt/specialization.h"
 #include "vulkan_rt/vk_error.h"
 
 #include <chrono>
-
 #include <vector>
 
 // Generated from shaders/*.rgen, *.rmiss, *.rchit (shaders/spirv.cmake).
@@ -78,6 +78,7 @@ void RtProgram::create_pipeline() {
     std::vector<VkShaderModule> modules;
     std::vector<VkPipelineShaderStageCreateInfo> stages;
     std::vector<VkRayTracingShaderGroupCreateInfoKHR> groups;
+    std::vector<VkShaderStageFlagBits> stage_bits;
     struct ModuleGuard {
         VkDevice d;
         std::vector<VkShaderModule>& m;
@@ -108,6 +109,7 @@ void RtProgram::create_pipeline() {
         st.pName = "main";
         if (kStages[i].stage == VK_SHADER_STAGE_RAYGEN_BIT_KHR) st.pSpecializationInfo = &spec.info;
         stages.push_back(st);
+        stage_bits.push_back(st.stage);
 
         // Ray generation and miss shaders are "general" groups; the closest hit is a
         // triangle hit group (no any-hit, no intersection shader: built-in triangles).
@@ -131,6 +133,9 @@ void RtProgram::create_pipeline() {
     // Only the ray-generation shader traces rays; hit and miss shaders never do.
     ci.maxPipelineRayRecursionDepth = 1;
     ci.layout = bindings_.layout();
+    PipelineReporter reporter(ctx_, stage_bits);
+    ci.pNext = reporter.chain(nullptr);
+    ci.flags = reporter.flags();
     PipelineCache cache(ctx_, shader_hash);
     const auto t0 = std::chrono::steady_clock::now();
     vk_check(rt_.vkCreateRayTracingPipelinesKHR(device, VK_NULL_HANDLE, cache.handle(), 1, &ci,
@@ -138,6 +143,13 @@ void RtProgram::create_pipeline() {
              "compiling the ray-tracing pipeline");
     cache.use().create_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    try {
+        report_ = reporter.report(pipeline_);
+    } catch (...) {
+        vkDestroyPipeline(device, pipeline_, nullptr);
+        pipeline_ = VK_NULL_HANDLE;
+        throw;
+    }
     cache.save();
     cache_use_ = cache.use();
 }

@@ -4,6 +4,7 @@
 // TLAS in slot 13; and the vkCmdTraceRaysKHR of a batch.
 #pragma once
 
+#include "render/stats.h"
 #include "shared/features.h"
 #include "vulkan_rt/buffer.h"
 #include "vulkan_rt/context.h"
@@ -34,6 +35,8 @@ class RtProgram {
 
     // The pipeline cache's part in creating the pipeline (pipeline_cache.h).
     const PipelineCacheUse& cache_use() const { return cache_use_; }
+    // What the driver said about creating it (pipeline_report.h).
+    const PipelineReport& report() const { return report_; }
 
   private:
     void create_pipeline();
@@ -45,6 +48,7 @@ class RtProgram {
     size_t raygen_bytes_;
     uint32_t features_; // the ray-generation shader's specialization (features.glsl)
     PipelineCacheUse cache_use_;
+    PipelineReport report_;
     PipelineBindings bindings_;
     VkPipeline pipeline_ = VK_NULL_HANDLE;
     Buffer sbt_;

@@ -5,6 +5,9 @@
 #include "vulkan_rt/compute_renderer.h"
 #include "vulkan_rt/context.h"
 #include "vulkan_rt/pipeline_renderer.h"
+#include "vulkan_rt/pipeline_report.h"
+
+#include <fmt/core.h>
 
 #include <memory>
 
@@ -26,11 +29,14 @@ std::unique_ptr<VulkanContext> open_device;
 std::string open_request;
 
 const VulkanContext& open_context(const VulkanOptions& vk) {
-    const std::string request = vk.device + '\n' + vk.mode;
+    const std::string request =
+        vk.device + '\n' + vk.mode + '\n' + (vk.pipeline_statistics ? "statistics" : "");
     if (!open_device || open_request != request) {
         open_device.reset(); // one device at a time
-        open_device = std::make_unique<VulkanContext>(vk.device, vk.mode);
+        open_device = std::make_unique<VulkanContext>(vk.device, vk.mode, vk.pipeline_statistics);
         open_request = request;
+        const std::string note = pipeline_statistics_note(*open_device);
+        if (!note.empty()) fmt::print(stderr, "twinpath: note: {}\n", note);
     }
     return *open_device;
 }

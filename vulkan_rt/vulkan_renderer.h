@@ -13,6 +13,9 @@ namespace tp {
 struct VulkanOptions {
     std::string device;        // --device: index or name substring; empty: the best device
     std::string mode = "auto"; // --vk-mode: auto, compute or pipeline (resolve_vk_mode)
+    // --pipeline-stats: the driver's statistics of the render pipeline in RenderStats::pipeline
+    // (pipeline_report.h); on a device without them a note on stderr, once per device opened.
+    bool pipeline_statistics = false;
 };
 
 // Renders on the selected device in the mode the request resolves to there (RenderStats::mode

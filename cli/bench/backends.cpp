@@ -58,11 +58,12 @@ std::vector<Backend> expand_backends(const std::vector<std::string>& requested,
 }
 
 RenderResult render_on(const Backend& backend, const FlatScene& scene, const RenderOptions& options,
-                       const std::string& device_selector) {
+                       const std::string& device_selector, bool pipeline_statistics) {
     if (backend.name == "cpu") return render_cpu(scene, options);
     VulkanOptions vk;
     vk.device = device_selector;
     vk.mode = backend.mode;
+    vk.pipeline_statistics = pipeline_statistics;
     return render_vulkan(scene, options, vk);
 }
 

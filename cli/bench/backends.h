@@ -29,8 +29,9 @@ std::vector<Backend> expand_backends(const std::vector<std::string>& requested,
                                      const std::string& device_selector, uint32_t cpu_threads,
                                      std::vector<Skip>& skipped);
 
-// Renders on a backend (RenderOptions::threads applies to the CPU only).
+// Renders on a backend (RenderOptions::threads applies to the CPU only;
+// `pipeline_statistics` to Vulkan only: VulkanOptions::pipeline_statistics).
 RenderResult render_on(const Backend& backend, const FlatScene& scene, const RenderOptions& options,
-                       const std::string& device_selector);
+                       const std::string& device_selector, bool pipeline_statistics = false);
 
 } // namespace tp::bench

@@ -16,11 +16,12 @@ constexpr uint32_t kReferenceSeed = 0x7e5f0001u;
 
 struct BenchOptions {
     // Sections; when none is chosen the ladder runs.
-    bool ladder = false; // error against time for each backend and mode (issue 5)
-    bool table = false;  // rays/s and time over depth and spp (thesis Table 5.3)
-    bool peer = false;   // the same scenes in Embree's path tracer tutorial (issue 2)
+    bool ladder = false;         // error against time for each backend and mode (issue 5)
+    bool table = false;          // rays/s and time over depth and spp (thesis Table 5.3)
+    bool peer = false;           // the same scenes in Embree's path tracer tutorial (issue 2)
     bool specialization = false; // scene-specialized vs all-features time per spp (issue 9)
     uint32_t spec_spp = 16, spec_rounds = 3; // specialization: spp per render, rounds per variant
+    bool pipeline_stats = false; // specialization: the Vulkan driver's pipeline statistics
 
     std::vector<std::string> scenes;   // catalogue names (scenes.h) or .json/.obj files
     std::vector<std::string> backends; // cpu, vulkan (every mode), vulkan:compute, ...

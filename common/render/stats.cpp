@@ -7,6 +7,68 @@
 #include <fstream>
 
 namespace tp {
+namespace {
+
+nlohmann::json feedback_json(const PipelineFeedback& f) {
+    return {{"stage", f.stage},
+            {"valid", f.valid},
+            {"cache_hit", f.cache_hit},
+            {"base_pipeline_acceleration", f.base_pipeline_acceleration},
+            {"duration_ms", f.duration_ms}};
+}
+
+// "pipeline_creation": the whole pipeline's feedback with its stages', or {"feedback": false}
+// when the device has no VK_EXT_pipeline_creation_feedback.
+nlohmann::json creation_json(const PipelineReport& p) {
+    if (p.feedback.empty()) return {{"feedback", false}};
+    nlohmann::json j = feedback_json(p.feedback.front());
+    j.erase("stage");
+    j["feedback"] = true;
+    j["stages"] = nlohmann::json::array();
+    for (size_t i = 1; i < p.feedback.size(); ++i)
+        j["stages"].push_back(feedback_json(p.feedback[i]));
+    return j;
+}
+
+nlohmann::json statistic_json(const PipelineStatistic& st) {
+    static const char* const kFormats[] = {"bool32", "int64", "uint64", "float64"};
+    nlohmann::json j = {
+        {"name", st.name}, {"description", st.description}, {"format", kFormats[st.value.index()]}};
+    std::visit([&](auto v) { j["value"] = v; }, st.value);
+    return j;
+}
+
+nlohmann::json pipeline_json(const RenderStats& s) {
+    if (!s.pipeline) return nullptr;
+    const PipelineReport& p = *s.pipeline;
+    nlohmann::json j = {{"mode", s.mode},
+                        {"variant", s.feature_variant},
+                        {"feature_mask", s.feature_mask},
+                        {"creation", creation_json(p)},
+                        {"statistics_available", p.statistics_available}};
+    if (!p.statistics_note.empty()) j["statistics_note"] = p.statistics_note;
+    j["executables"] = nlohmann::json::array();
+    for (const PipelineExecutable& e : p.executables) {
+        nlohmann::json ej = {{"stages", e.stages},
+                             {"name", e.name},
+                             {"description", e.description},
+                             {"subgroup_size", e.subgroup_size},
+                             {"statistics", nlohmann::json::array()}};
+        for (const PipelineStatistic& st : e.statistics)
+            ej["statistics"].push_back(statistic_json(st));
+        j["executables"].push_back(ej);
+    }
+    return j;
+}
+
+void write_json(const std::string& path, const nlohmann::json& j) {
+    std::ofstream out(path);
+    if (!out) runtime_error("cannot write {}", path);
+    out << j.dump(2) << "\n";
+    if (!out) runtime_error("cannot write {}", path);
+}
+
+} // namespace
 
 void write_stats_json(const std::string& path, const RenderStats& s) {
     nlohmann::json j;
@@ -32,11 +94,25 @@ void write_stats_json(const std::string& path, const RenderStats& s) {
     j["accel_bytes"] = s.accel_bytes;
     j["features"] = {
         {"scene", s.scene_features}, {"variant", s.feature_variant}, {"mask", s.feature_mask}};
+    if (s.pipeline) j["pipeline_creation"] = creation_json(*s.pipeline);
     for (const auto& [k, v] : s.extra) j["extra"][k] = v;
-    std::ofstream out(path);
-    if (!out) runtime_error("cannot write {}", path);
-    out << j.dump(2) << "\n";
-    if (!out) runtime_error("cannot write {}", path);
+    write_json(path, j);
+}
+
+std::string pipeline_stats_json(const RenderStats& s) {
+    return pipeline_json(s).dump();
+}
+
+void write_pipeline_stats_json(const std::string& path, const RenderStats& s) {
+    const auto extra = [&](const char* key) {
+        const auto it = s.extra.find(key);
+        return it == s.extra.end() ? std::string() : it->second;
+    };
+    write_json(path, {{"schema", "twinpath-pipeline-stats/1"},
+                      {"scene", s.scene},
+                      {"device", s.device},
+                      {"driver", extra("driver")},
+                      {"pipelines", nlohmann::json::array({pipeline_json(s)})}});
 }
 
 } // namespace tp

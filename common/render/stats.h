@@ -4,7 +4,9 @@
 
 #include <cstdint>
 #include <map>
+#include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 namespace tp {
@@ -20,6 +22,42 @@ struct RayCounts {
         shadow += o.shadow;
         return *this;
     }
+};
+
+// What the Vulkan driver says about the render pipeline it created (docs/gpu.md, "Pipeline
+// statistics"). VK_EXT_pipeline_creation_feedback, for one pipeline or one of its stages:
+struct PipelineFeedback {
+    std::string stage;      // "pipeline" for the whole pipeline, else "compute", "raygen", ...
+    bool valid = false;     // VK_PIPELINE_CREATION_FEEDBACK_VALID_BIT: the rest is filled in
+    bool cache_hit = false; // ..._APPLICATION_PIPELINE_CACHE_HIT_BIT: no compilation needed
+    bool base_pipeline_acceleration = false; // ..._BASE_PIPELINE_ACCELERATION_BIT
+    double duration_ms = 0;                  // the driver's time to create it
+};
+
+// VK_KHR_pipeline_executable_properties: one statistic of an executable, in the driver's
+// format (VkPipelineExecutableStatisticFormatKHR: bool32, int64, uint64, float64).
+struct PipelineStatistic {
+    std::string name, description;
+    std::variant<bool, int64_t, uint64_t, double> value;
+};
+
+// One executable the driver compiled the pipeline into (a shader stage, or several fused).
+struct PipelineExecutable {
+    std::vector<std::string> stages; // "compute", "raygen", "miss", "closest_hit", ...
+    std::string name, description;
+    uint32_t subgroup_size = 0;
+    std::vector<PipelineStatistic> statistics;
+};
+
+struct PipelineReport {
+    // The whole pipeline, then each stage; empty when the device lacks the extension.
+    std::vector<PipelineFeedback> feedback;
+    // `--pipeline-stats`: whether they were asked for, whether the device could give them
+    // (when not, `statistics_note` says why), and the executables.
+    bool statistics_requested = false;
+    bool statistics_available = false;
+    std::string statistics_note;
+    std::vector<PipelineExecutable> executables;
 };
 
 struct RenderStats {
@@ -44,12 +82,23 @@ struct RenderStats {
     std::string feature_variant;
     uint32_t feature_mask = 0;
     std::map<std::string, std::string> extra;
+    std::optional<PipelineReport> pipeline; // Vulkan: the render pipeline
 
     double rays_per_second() const {
         return wall_time_s > 0 ? double(rays.total()) / wall_time_s : 0.0;
     }
 };
 
+// `--stats`: everything above but the pipeline's executables; of the pipeline report only the
+// creation feedback (`pipeline_creation`).
 void write_stats_json(const std::string& path, const RenderStats& s);
+
+// The render pipeline of a Vulkan render as the text of a JSON object (mode, feature variant
+// and mask, creation feedback, executables with their statistics), for `--pipeline-stats`
+// (docs/gpu.md); "null" for a render without one.
+std::string pipeline_stats_json(const RenderStats& s);
+
+// `twinpath render --pipeline-stats FILE`: the device, the scene and pipeline_stats_json.
+void write_pipeline_stats_json(const std::string& path, const RenderStats& s);
 
 } // namespace tp
