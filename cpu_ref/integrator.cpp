@@ -109,6 +109,7 @@ vec3 CpuIntegrator::trace_path(uint32_t x, uint32_t y, uint32_t sample_index, Ra
         }
         const Instance& inst = s.instances[hit.instance];
         SurfacePoint sp = access_.surface(hit, F);
+        surface_snap_to_ray(sp, ray.origin, ray.dir);
         const Material mat = access_.material(hit.instance, sp.uv, F);
         const vec3 wo = -ray.dir;
         PATH_LOG(rec.event = VERTEX_HIT; rec.t = hit.t; rec.instance = hit.instance;
@@ -177,7 +178,7 @@ vec3 CpuIntegrator::trace_path(uint32_t x, uint32_t y, uint32_t sample_index, Ra
                              rec.nee = contrib);
                     ++rays.shadow;
                     const bool occluded =
-                        accel_.occluded(shadow_ray(sp.p, sp.ng, ls, access_.light(li)));
+                        accel_.occluded(shadow_ray(sp.p, sp.p_error, sp.ng, ls, access_.light(li)));
                     if (!occluded) L += contrib;
                     PATH_LOG(rec.shadow = occluded ? SHADOW_OCCLUDED : SHADOW_UNOCCLUDED);
                 }
@@ -207,7 +208,7 @@ vec3 CpuIntegrator::trace_path(uint32_t x, uint32_t y, uint32_t sample_index, Ra
             PATH_LOG(rec.throughput = T; path_log_emit(log, rec, TERM_ROULETTE));
             break;
         }
-        ray = spawn_ray(sp.p, sp.ng, bs.wi);
+        ray = spawn_ray(sp.p, sp.p_error, sp.ng, bs.wi);
         ++rays.extension;
         PATH_LOG(rec.throughput = T; path_log_emit(log, rec, TERM_CONTINUE));
     }

@@ -54,6 +54,7 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
         }
         uint light_offset = instances[hit.instance].light_offset;
         SurfacePoint sp = scene_surface(hit);
+        surface_snap_to_ray(sp, ray.origin, ray.dir);
         Material mat = scene_material(hit.instance, sp.uv);
         vec3 wo = -ray.dir;
         PATH_LOG(rec.event = VERTEX_HIT; rec.t = hit.t; rec.instance = hit.instance;
@@ -118,7 +119,7 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
                              rec.mis_light = ls.delta ? 1.0f : power_heuristic(light_pdf, rec.light_bsdf_pdf);
                              rec.nee = contrib);
                     ++rays.shadow;
-                    bool occluded = trace_occluded(shadow_ray(sp.p, sp.ng, ls, lights[li]));
+                    bool occluded = trace_occluded(shadow_ray(sp.p, sp.p_error, sp.ng, ls, lights[li]));
                     if (!occluded) L += contrib;
                     PATH_LOG(rec.shadow = occluded ? SHADOW_OCCLUDED : SHADOW_UNOCCLUDED);
                 }
@@ -147,7 +148,7 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
             PATH_LOG(rec.throughput = T; path_log_emit(rec, TERM_ROULETTE));
             break;
         }
-        ray = spawn_ray(sp.p, sp.ng, bs.wi);
+        ray = spawn_ray(sp.p, sp.p_error, sp.ng, bs.wi);
         ++rays.extension;
         PATH_LOG(rec.throughput = T; path_log_emit(rec, TERM_CONTINUE));
     }

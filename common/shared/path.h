@@ -51,10 +51,11 @@ struct Ray {
     uint pad0;
 };
 
-// New ray leaving p in direction d (unit) from a surface with geometric normal ng.
-inline Ray spawn_ray(vec3 p, vec3 ng, vec3 d) {
+// New ray leaving p (coordinate error bound p_error, offset.h) in direction d (unit) from a
+// surface with geometric normal ng.
+inline Ray spawn_ray(vec3 p, vec3 p_error, vec3 ng, vec3 d) {
     Ray r;
-    r.origin = offset_ray_origin(p, dot(d, ng) > 0.0f ? ng : -ng);
+    r.origin = offset_ray_origin(p, p_error, dot(d, ng) > 0.0f ? ng : -ng);
     r.dir = d;
     r.tmax = FLOAT_MAX;
     r.pad0 = 0u;
@@ -75,13 +76,17 @@ inline Ray camera_ray(Camera cam, RngKey key, uint x, uint y) {
 }
 
 // Shadow ray from p towards a light sample. A sample with a finite distance ends at the light
-// point, itself moved off the light's surface by the same ULP rule when the light is a
-// triangle, so neither end can hit its own surface.
-inline Ray shadow_ray(vec3 p, vec3 ng, LightSample ls, Light l) {
-    Ray r = spawn_ray(p, ng, ls.wi);
+// point, itself moved off the light's surface by the same error-bound rule when the light is a
+// triangle (its point is a barycentric mix of the world vertices p0..p2, whose magnitudes
+// bound the error as a triangle's do in offset.h), so neither end can hit its own surface.
+inline Ray shadow_ray(vec3 p, vec3 p_error, vec3 ng, LightSample ls, Light l) {
+    Ray r = spawn_ray(p, p_error, ng, ls.wi);
     if (ls.dist >= FLOAT_MAX) return r;
     vec3 target = ls.point;
-    if (l.type == LIGHT_TRIANGLE) target = offset_ray_origin(target, triangle_light_normal(l));
+    if (l.type == LIGHT_TRIANGLE) {
+        vec3 m = max(max(abs(l.p0), abs(l.p1)), abs(l.p2));
+        target = offset_ray_origin(target, point_error_bound(m, target), triangle_light_normal(l));
+    }
     vec3 d = target - r.origin;
     float len = length(d);
     r.dir = len > 0.0f ? d / len : ls.wi;

@@ -6,6 +6,7 @@
 #define TP_SHARED_SURFACE_H
 
 #include "math.h"
+#include "offset.h"
 #include "types.h"
 
 TP_NAMESPACE_BEGIN
@@ -47,19 +48,49 @@ inline vec2 barycentric_mix2(vec2 a, vec2 b, vec2 c, vec2 uv) {
 }
 
 struct SurfacePoint {
-    vec3 p;  // world position
-    vec3 ng; // unit geometric normal, (v1 - v0) x (v2 - v0): the front (emitting) side
-    vec3 ns; // unit shading normal, on ng's side
+    vec3 p;       // world position
+    vec3 p_error; // bound on the float error of each coordinate of p (offset.h)
+    vec3 ng;      // unit geometric normal, (v1 - v0) x (v2 - v0): the front (emitting) side
+    vec3 ns;      // unit shading normal, on ng's side
     vec2 uv;
 };
+
+// The magnitude of each world coordinate in the computation of a point of the triangle:
+// m_c = sum_k |M_ck| max_i |v_ik| + |T_c| for the instance's rows (M, T) (offset.h).
+inline vec3 triangle_coordinate_magnitude(Instance t, vec3 v0, vec3 v1, vec3 v2) {
+    vec3 b = max(max(abs(v0), abs(v1)), abs(v2));
+    vec4 h = vec4(b.x, b.y, b.z, 1.0f);
+    return vec3(dot(abs(t.to_world0), h), dot(abs(t.to_world1), h), dot(abs(t.to_world2), h));
+}
 
 inline SurfacePoint surface_point(Instance t, vec3 v0, vec3 v1, vec3 v2, vec2 bary) {
     SurfacePoint s;
     s.p = instance_point_to_world(t, barycentric_mix3(v0, v1, v2, bary));
+    s.p_error = point_error_bound(triangle_coordinate_magnitude(t, v0, v1, v2), s.p);
     s.ng = normalize(instance_normal_to_world(t, cross(v1 - v0, v2 - v0)));
     s.ns = s.ng;
     s.uv = vec2(0.0f);
     return s;
+}
+
+// Moves the hit point to where the ray (o, d) meets the triangle's plane. Rebuilt from float
+// barycentrics, the point is off by their error times the triangle's size, along the plane:
+// ~10 units on a triangle 2e8 long, whose barycentrics are good to ~6e-8 (docs/stress.md). The
+// plane through that point with normal ng is still the triangle's to the rounding of p (the
+// barycentric error moves p within it), so t = dot(p - o, ng) / dot(d, ng) and q = o + t d land
+// where the ray meets the triangle, laterally to a few ulps of |p - o|, however large the
+// triangle. The step q + dot(p - q, ng) ng then puts q back on p's plane, so that the distance
+// from the plane stays the one p_error bounds, plus the rounding of that step: the difference
+// and the dot (gamma(4) |p - q| along ng, below sqrt(3) gamma(4) < 8u times its largest
+// coordinate, taken as OFFSET_GAMMA_P). A ray in the plane (dot(d, ng) = 0) or a degenerate
+// triangle (ng NaN) keeps the barycentric point.
+inline void surface_snap_to_ray(INOUT(SurfacePoint) s, vec3 o, vec3 d) {
+    float t = dot(s.p - o, s.ng) / dot(d, s.ng);
+    if (!(abs(t) < FLOAT_MAX)) return;
+    vec3 q = o + t * d;
+    vec3 e = abs(s.p - q);
+    s.p = q + dot(s.p - q, s.ng) * s.ng;
+    s.p_error += vec3(OFFSET_GAMMA_P * max(max(e.x, e.y), e.z));
 }
 
 // Interpolated vertex normals; flipped onto the geometric side when the mesh's normals

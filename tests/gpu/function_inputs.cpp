@@ -350,14 +350,36 @@ void make_input(uint32_t id, InputGen& g, FnIn& x) {
         x.u.x = lobes[g.below(4)];
         break;
     }
-    case FN_SPAWN_RAY:
-    case FN_OFFSET_RAY_ORIGIN:
-        set3(x, 0, g.chance(0.2f) ? g.box(1.0f / 32.0f) : g.box(1000.0f));
+    case FN_SPAWN_RAY: {
+        const vec3 p = g.box(g.log_uniform(1e-4f, 1e5f));
+        set3(x, 0, p);
         set3(x, 1, n);
         set3(x, 2, g.unit());
+        set3(x, 3, point_error_bound(glm::abs(p) + g.box(1.0f), p));
         break;
+    }
+    case FN_OFFSET_RAY_ORIGIN: {
+        const vec3 p = g.box(g.log_uniform(1e-4f, 1e5f));
+        set3(x, 0, p);
+        set3(x, 1, point_error_bound(glm::abs(p) + g.box(1.0f), p));
+        set3(x, 2, n);
+        break;
+    }
+    case FN_SURFACE_SNAP_TO_RAY: {
+        // A point of a plane, a ray that meets the plane near it at |cos| >= 0.05.
+        const vec3 p = g.box(10.0f);
+        vec3 d = g.unit();
+        while (std::abs(glm::dot(d, n)) < 0.05f) d = g.unit();
+        set3(x, 0, p);
+        set3(x, 1, point_error_bound(glm::abs(p), p));
+        set3(x, 2, n);
+        set3(x, 3, p + g.box(1e-3f) - g.log_uniform(0.01f, 100.0f) * d);
+        set3(x, 4, d);
+        break;
+    }
     case FN_SHADOW_RAY: {
         const vec3 p = g.box(10.0f), wi = g.unit();
+        set3(x, 5, point_error_bound(glm::abs(p), p));
         const float dist = g.chance(0.3f) ? FLOAT_MAX : g.log_uniform(0.1f, 100.0f);
         set3(x, 0, p);
         set3(x, 1, n);
@@ -391,10 +413,6 @@ void make_input(uint32_t id, InputGen& g, FnIn& x) {
         }
         break;
     }
-    case FN_OFFSET_COORDINATE:
-        x.f[0] = vec4(g.chance(0.2f) ? g.uniform(-1.0f / 32, 1.0f / 32) : g.uniform(-1e3f, 1e3f),
-                      g.uniform(-1.0f, 1.0f), 0.0f, 0.0f);
-        break;
     case FN_ROULETTE_SURVIVAL:
     case FN_ROULETTE_APPLY:
         set3(x, 0, g.color(2.0f), g.uni());

@@ -51,6 +51,10 @@ void same_all(const FnOut& c, const FnOut& g, Checker& k) {
 // magnitudes <= 2 and normalized (inversesqrt 2 ulp): each component within 32 u.
 constexpr double kUnitAbs = 32.0 * kU;
 
+// offset.h's error-bound factors, in double.
+const double kGammaM = double(OFFSET_GAMMA_M);
+const double kGammaP = double(OFFSET_GAMMA_P);
+
 // Relative error of phong_power(c, n) = exp2(n log2 c) when c itself is uncertain by dc:
 // log2 c errs by log2_abs(c) plus dc / (c ln 2), multiplied by n, plus the
 // product's rounding; exp2 turns an absolute error dx of its argument into a relative error
@@ -556,6 +560,10 @@ std::vector<Case> cases() {
         const double ng_tol =
             (mi * cross_err + 4.0 * kU * mi * sum_abs(cr)) / glm::length(nw) + kUnitAbs;
         k.close3("ng", v3(gpu.f[1]), v3(cpu.f[1]), ng_tol, 0);
+        // p_error: nonnegative sums (contractible dots), within 4u of themselves; its |p| term
+        // follows p's own difference.
+        k.close3("p_error", v3(gpu.f[4]), v3(cpu.f[4]),
+                 kGammaP * (4.0 * kU * mag + mrow * bary_tol(v0, v1, v2, u, v)), 4.0 * kU);
         if (!shading) {
             k.close3("ns", v3(gpu.f[2]), v3(cpu.f[2]), ng_tol, 0);
         } else {
@@ -593,18 +601,43 @@ std::vector<Case> cases() {
                  }});
     // Signs of contractible dot products (branches).
     c.push_back({FN_SCATTER_IS_CONSISTENT, "scatter_is_consistent", exact, 1e-3});
-    // Integer offsets of the float bits and a product by 2^-16 (exact): bit-identical, except
-    // where the side, the sign of a contractible dot(d, ng), flips (branch).
-    c.push_back({FN_SPAWN_RAY, "spawn_ray", exact, 1e-3});
-    // spawn_ray, then the direction to the offset target: length (sqrt of a contractible dot)
-    // and a division.
-    c.push_back({FN_SHADOW_RAY, "shadow_ray",
-                 [](const FnIn&, const FnOut& cpu, const FnOut& gpu, Checker& k) {
-                     k.same3("origin", v3(gpu.f[0]), v3(cpu.f[0]));
-                     k.close("tmax", gpu.f[0].w, cpu.f[0].w, 0, kSqrtRel + 2.0 * kU);
-                     k.close3("dir", v3(gpu.f[1]), v3(cpu.f[1]), 0, kSqrtRel + kDivRel + 4.0 * kU);
+    // p + dot(|n|, e) n: the dot (contractible) within 3u of itself, the sum (contractible
+    // with the product) one rounding of |origin|: per coordinate 4u (|p| + |dot(|n|, e)|).
+    const auto origin_tol = [](glm::dvec3 p, glm::dvec3 n, glm::dvec3 e) {
+        const double off = glm::dot(glm::abs(n), e);
+        return 4.0 * kU * (std::max({std::abs(p.x), std::abs(p.y), std::abs(p.z)}) + off);
+    };
+    // Branch: the side, the sign of a contractible dot(d, ng).
+    c.push_back({FN_SPAWN_RAY, "spawn_ray",
+                 [=](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close3("origin", v3(gpu.f[0]), v3(cpu.f[0]),
+                              origin_tol(d3(x.f[0]), d3(x.f[1]), d3(x.f[3])), 0);
+                     k.same("tmax", gpu.f[0].w, cpu.f[0].w);
+                     k.same3("dir", v3(gpu.f[1]), v3(cpu.f[1]));
                  },
                  1e-3});
+    // spawn_ray, then the direction to the offset target (offset the same way): length (sqrt
+    // of a contractible dot) and a division, relative to the length, whose ends each carry
+    // origin_tol.
+    c.push_back(
+        {FN_SHADOW_RAY, "shadow_ray",
+         [=](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+             // The target moves by at most |p_error|_1 <= 3 (OFFSET_GAMMA_M m +
+             // OFFSET_GAMMA_P |t|) along a unit normal that agrees to kUnitAbs.
+             const glm::dvec3 p = d3(x.f[0]), n = d3(x.f[1]), t = d3(x.f[4]);
+             const glm::dvec3 m = glm::max(glm::max(glm::abs(d3(x.f[6])), glm::abs(d3(x.f[7]))),
+                                           glm::abs(d3(x.f[8])));
+             const double t_max = std::max({std::abs(t.x), std::abs(t.y), std::abs(t.z)});
+             const double t_off = 3.0 * (kGammaM * std::max({m.x, m.y, m.z}) + kGammaP * t_max);
+             const double ends =
+                 origin_tol(p, n, d3(x.f[5])) + 4.0 * kU * (t_max + t_off) + kUnitAbs * t_off;
+             const double len = std::max(double(cpu.f[0].w), 1e-30);
+             k.close3("origin", v3(gpu.f[0]), v3(cpu.f[0]), origin_tol(p, n, d3(x.f[5])), 0);
+             k.close("tmax", gpu.f[0].w, cpu.f[0].w, 2.0 * ends, kSqrtRel + 2.0 * kU);
+             k.close3("dir", v3(gpu.f[1]), v3(cpu.f[1]), 4.0 * ends / len,
+                      kSqrtRel + kDivRel + 4.0 * kU);
+         },
+         1e-3});
     // normalize/cross as above; tan(theta) inherited from sin/cos: 2^-11 each, relative to
     // sin and cos of the half angle; the aspect ratio one division.
     c.push_back({FN_CAMERA_MAKE, "camera_make",
@@ -635,8 +668,28 @@ std::vector<Case> cases() {
                      const double tol = (4.0 * kU * mag + 2.0 * kDivRel * mag) / len + kUnitAbs;
                      k.close3("d", v3(gpu.f[0]), v3(cpu.f[0]), tol, 0);
                  }});
-    c.push_back({FN_OFFSET_COORDINATE, "offset_coordinate", exact});
-    c.push_back({FN_OFFSET_RAY_ORIGIN, "offset_ray_origin", exact});
+    c.push_back({FN_OFFSET_RAY_ORIGIN, "offset_ray_origin",
+                 [=](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     k.close3("origin", v3(gpu.f[0]), v3(cpu.f[0]),
+                              origin_tol(d3(x.f[0]), d3(x.f[2]), d3(x.f[1])), 0);
+                 }});
+    // t = dot(p - o, ng) / dot(d, ng): the dots contractible, each within 4u of the sum of
+    // its terms' magnitudes (|p| + |o| for the first, 1 for the second), the division one
+    // more rounding; o + t d and the step back onto the plane add a few u of |o| + |t|.
+    // Together below 16u (|p| + |o| + |t|) / |dot(d, ng)| per coordinate; p_error follows
+    // with OFFSET_GAMMA_P of that and 2u of itself.
+    c.push_back({FN_SURFACE_SNAP_TO_RAY, "surface_snap_to_ray",
+                 [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {
+                     const glm::dvec3 p = d3(x.f[0]), n = d3(x.f[2]), o = d3(x.f[3]),
+                                      d = d3(x.f[4]);
+                     const double cos = std::abs(glm::dot(d, n));
+                     const double t = glm::dot(p - o, n) / glm::dot(d, n);
+                     const double mag = sum_abs(p) + sum_abs(o) + std::abs(t);
+                     const double tol = 16.0 * kU * mag / cos;
+                     k.close3("p", v3(gpu.f[0]), v3(cpu.f[0]), tol, 0);
+                     k.close3("p_error", v3(gpu.f[4]), v3(cpu.f[4]), kGammaP * tol, 2.0 * kU);
+                     k.same3("ng", v3(gpu.f[1]), v3(cpu.f[1]));
+                 }});
     c.push_back({FN_ROULETTE_SURVIVAL, "roulette_survival", exact});
     // The decision compares exact values; the survivor's throughput is one division.
     c.push_back({FN_ROULETTE_APPLY, "roulette_apply",

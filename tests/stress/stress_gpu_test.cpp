@@ -30,7 +30,7 @@ Size gpu_size() {
 }
 
 // Open bugs (docs/stress.md, "Open"): left out below, checked in [!shouldfail] test cases.
-const std::vector<std::string> kOpenScale = {"scale 1e-4", "translate 1e5 (all axes)"};
+const std::vector<std::string> kOpenScale = {"translate 1e5 (all axes)"};
 const std::vector<std::string> kOpenDielectric = {"glass furnace IOR 3", "total internal",
                                                   "touching cubes"};
 const std::vector<std::string> kOpenDegenerate = {"floor vertices at +-1e8"};
@@ -51,7 +51,7 @@ TEST_CASE("stress GPU: scale and translation in compute mode", "[stress][gpu]") 
     require_all(scale_cases(gpu(), gpu_size()), kOpenScale);
 }
 
-TEST_CASE("stress GPU (open): scale 1e-4 and translation 1e5 in compute mode",
+TEST_CASE("stress GPU (open): translation 1e5 along all axes in compute mode",
           "[stress][gpu][!shouldfail]") {
     require_open(scale_cases(gpu(), gpu_size()), kOpenScale);
 }

@@ -107,7 +107,7 @@ const uint FN_SPAWN_RAY = 71u;
 const uint FN_SHADOW_RAY = 72u;
 const uint FN_CAMERA_MAKE = 73u;
 const uint FN_CAMERA_DIRECTION = 74u;
-const uint FN_OFFSET_COORDINATE = 75u;
+const uint FN_SURFACE_SNAP_TO_RAY = 75u;
 const uint FN_OFFSET_RAY_ORIGIN = 76u;
 const uint FN_ROULETTE_SURVIVAL = 77u;
 const uint FN_ROULETTE_APPLY = 78u;
@@ -216,12 +216,13 @@ inline void fn_put_ray(INOUT(FnOut) o, Ray r) {
     o.f[1] = vec4(r.dir.x, r.dir.y, r.dir.z, 0.0f);
 }
 
-// p f0, ng f1, ns f2, uv f3
+// p f0, ng f1, ns f2, uv f3, p_error f4
 inline void fn_put_surface(INOUT(FnOut) o, SurfacePoint s) {
     o.f[0] = vec4(s.p.x, s.p.y, s.p.z, 0.0f);
     o.f[1] = vec4(s.ng.x, s.ng.y, s.ng.z, 0.0f);
     o.f[2] = vec4(s.ns.x, s.ns.y, s.ns.z, 0.0f);
     o.f[3] = vec4(s.uv.x, s.uv.y, 0.0f, 0.0f);
+    o.f[4] = vec4(s.p_error.x, s.p_error.y, s.p_error.z, 0.0f);
 }
 
 inline void fn_put3(INOUT(FnOut) o, uint i, vec3 v) {
@@ -479,6 +480,7 @@ inline FnOut run_function(uint id, FnIn x) {
     case FN_SURFACE_FACE_VIEWER: {
         SurfacePoint s;
         s.p = fn3(x, 6u);
+        s.p_error = vec3(0.0f);
         s.ng = fn3(x, 7u);
         s.ns = fn3(x, 8u);
         s.uv = vec2(x.f[9].x, x.f[9].y);
@@ -496,7 +498,7 @@ inline FnOut run_function(uint id, FnIn x) {
         o.u.x = fn_bool(scatter_is_consistent(a, b, c, x.u.x));
         break;
     case FN_SPAWN_RAY:
-        fn_put_ray(o, spawn_ray(a, b, c));
+        fn_put_ray(o, spawn_ray(a, d, b, c));
         break;
     case FN_SHADOW_RAY: {
         LightSample ls;
@@ -506,7 +508,7 @@ inline FnOut run_function(uint id, FnIn x) {
         ls.pdf = x.f[3].w;
         ls.point = e;
         ls.delta = x.u.x != 0u;
-        fn_put_ray(o, shadow_ray(a, b, ls, fn_light(x)));
+        fn_put_ray(o, shadow_ray(a, fn3(x, 5u), b, ls, fn_light(x)));
         break;
     }
     case FN_CAMERA_MAKE: {
@@ -521,11 +523,19 @@ inline FnOut run_function(uint id, FnIn x) {
     case FN_CAMERA_DIRECTION:
         fn_put3(o, 0u, camera_direction(fn_camera(x), e.x, e.y));
         break;
-    case FN_OFFSET_COORDINATE:
-        o.f[0].x = offset_coordinate(a.x, a.y);
+    case FN_SURFACE_SNAP_TO_RAY: {
+        SurfacePoint s;
+        s.p = a;
+        s.p_error = b;
+        s.ng = c;
+        s.ns = c;
+        s.uv = vec2(0.0f);
+        surface_snap_to_ray(s, d, e);
+        fn_put_surface(o, s);
         break;
+    }
     case FN_OFFSET_RAY_ORIGIN:
-        fn_put3(o, 0u, offset_ray_origin(a, b));
+        fn_put3(o, 0u, offset_ray_origin(a, b, c));
         break;
     case FN_ROULETTE_SURVIVAL:
         o.f[0].x = roulette_survival(a, x.u.x, x.u.y);
