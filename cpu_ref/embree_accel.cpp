@@ -28,6 +28,13 @@ const char* embree_error_name(RTCError e) {
     }
 }
 
+// The object-to-world transform of one point, in double precision.
+glm::dvec3 transform_point_exact(const Instance& inst, vec3 p) {
+    const glm::dvec3 q(p);
+    const auto row = [&](vec4 r) { return glm::dot(glm::dvec3(r), q) + double(r.w); };
+    return {row(inst.to_world0), row(inst.to_world1), row(inst.to_world2)};
+}
+
 float embree_tfar(float tmax) {
     return tmax >= FLOAT_MAX ? std::numeric_limits<float>::infinity() : tmax;
 }
@@ -45,6 +52,39 @@ void EmbreeAccel::check(const char* what) const {
         runtime_error("Embree failed while {}: {}", what, embree_error_name(e));
 }
 
+RTCScene EmbreeAccel::new_scene() const {
+    RTCScene s = rtcNewScene(device_);
+    // ROBUST: no traversal shortcuts that trade watertightness for speed.
+    rtcSetSceneFlags(s, RTC_SCENE_FLAG_ROBUST);
+    rtcSetSceneBuildQuality(s, RTC_BUILD_QUALITY_HIGH);
+    return s;
+}
+
+void EmbreeAccel::attach_mesh(RTCScene s, uint32_t id, const FlatScene& scene, const MeshInfo& m,
+                              const Instance* to_world) const {
+    RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
+    // New (Embree-owned, padded) buffers: a shared vec3 array would be read 4 bytes past its end
+    // by Embree's 16-byte vertex loads.
+    auto* v = static_cast<vec3*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(vec3), m.vertex_count));
+    auto* i = static_cast<uvec3*>(rtcSetNewGeometryBuffer(
+        g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, sizeof(uvec3), m.triangle_count));
+    check("allocating mesh buffers");
+    const vec3* p = &scene.positions[m.first_vertex];
+    if (to_world) {
+        // In double, rounded once: each world vertex is the float nearest the exact product, and a
+        // vertex shared by two triangles stays one point (watertightness survives the transform).
+        for (uint32_t k = 0; k < m.vertex_count; ++k)
+            v[k] = vec3(transform_point_exact(*to_world, p[k]));
+    } else {
+        std::memcpy(v, p, sizeof(vec3) * m.vertex_count);
+    }
+    std::memcpy(i, &scene.triangles[m.first_triangle], sizeof(uvec3) * m.triangle_count);
+    rtcCommitGeometry(g);
+    rtcAttachGeometryByID(s, g, id);
+    rtcReleaseGeometry(g);
+}
+
 EmbreeAccel::EmbreeAccel(const FlatScene& scene) {
     device_ = rtcNewDevice(nullptr);
     if (!device_)
@@ -52,33 +92,28 @@ EmbreeAccel::EmbreeAccel(const FlatScene& scene) {
                       embree_error_name(rtcGetDeviceError(nullptr)));
     rtcSetDeviceMemoryMonitorFunction(device_, &EmbreeAccel::monitor, this);
 
-    for (const MeshInfo& m : scene.meshes) {
-        RTCScene s = rtcNewScene(device_);
-        // ROBUST: no traversal shortcuts that trade watertightness for speed.
-        rtcSetSceneFlags(s, RTC_SCENE_FLAG_ROBUST);
-        rtcSetSceneBuildQuality(s, RTC_BUILD_QUALITY_HIGH);
-        RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
-        // New (Embree-owned, padded) buffers: a shared vec3 array would be read 4 bytes past
-        // its end by Embree's 16-byte vertex loads.
-        auto* v = static_cast<float*>(rtcSetNewGeometryBuffer(
-            g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, 3 * sizeof(float), m.vertex_count));
-        auto* i = static_cast<uint32_t*>(rtcSetNewGeometryBuffer(
-            g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, 3 * sizeof(uint32_t), m.triangle_count));
-        check("allocating mesh buffers");
-        std::memcpy(v, &scene.positions[m.first_vertex], sizeof(vec3) * m.vertex_count);
-        std::memcpy(i, &scene.triangles[m.first_triangle], sizeof(uvec3) * m.triangle_count);
-        rtcCommitGeometry(g);
-        rtcAttachGeometryByID(s, g, 0);
-        rtcReleaseGeometry(g);
+    // A mesh that one instance uses goes into the top-level scene as world-space triangles: a
+    // one-level BVH saves the instance transform and a second traversal per ray (BENCHMARKS.md,
+    // local-peer). A mesh that several instances share is built once and instanced.
+    std::vector<uint32_t> uses(scene.meshes.size(), 0);
+    for (const Instance& inst : scene.instances) ++uses[inst.mesh];
+    meshes_.assign(scene.meshes.size(), nullptr);
+    for (uint32_t k = 0; k < scene.meshes.size(); ++k) {
+        if (uses[k] < 2) continue;
+        RTCScene s = new_scene();
+        attach_mesh(s, 0, scene, scene.meshes[k], nullptr);
         rtcCommitScene(s);
         check("building a mesh BVH");
-        meshes_.push_back(s);
+        meshes_[k] = s;
     }
 
-    top_ = rtcNewScene(device_);
-    rtcSetSceneFlags(top_, RTC_SCENE_FLAG_ROBUST);
+    top_ = new_scene();
     for (uint32_t k = 0; k < scene.instances.size(); ++k) {
         const Instance& inst = scene.instances[k];
+        if (!meshes_[inst.mesh]) {
+            attach_mesh(top_, k, scene, scene.meshes[inst.mesh], &inst);
+            continue;
+        }
         RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
         rtcSetGeometryInstancedScene(g, meshes_[inst.mesh]);
         const float rows[12] = {inst.to_world0.x, inst.to_world0.y, inst.to_world0.z,
@@ -91,12 +126,13 @@ EmbreeAccel::EmbreeAccel(const FlatScene& scene) {
         rtcReleaseGeometry(g);
     }
     rtcCommitScene(top_);
-    check("building the instance BVH");
+    check("building the top-level BVH");
 }
 
 EmbreeAccel::~EmbreeAccel() {
     if (top_) rtcReleaseScene(top_);
-    for (RTCScene s : meshes_) rtcReleaseScene(s);
+    for (RTCScene s : meshes_)
+        if (s) rtcReleaseScene(s);
     if (device_) rtcReleaseDevice(device_);
 }
 
@@ -122,7 +158,8 @@ Hit EmbreeAccel::intersect(const Ray& ray) const {
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return h;
     h.found = true;
     h.t = rh.ray.tfar;
-    h.instance = rh.hit.instID[0];
+    // A flattened mesh's triangles carry their instance index as geometry ID (constructor).
+    h.instance = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? rh.hit.instID[0] : rh.hit.geomID;
     h.primitive = rh.hit.primID;
     h.bary = vec2(rh.hit.u, rh.hit.v);
     return h;

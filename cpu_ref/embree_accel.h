@@ -1,6 +1,7 @@
-// Embree 3 acceleration structure for the CPU reference: one Embree scene per mesh (built once,
-// however many instances use it) and a top-level scene of Embree instance geometries whose
-// geometry IDs are the FlatScene instance indices.
+// Embree 3 acceleration structure for the CPU reference: one Embree geometry per mesh. A mesh that
+// several instances share is one Embree scene, built once and placed by Embree instance
+// geometries; a mesh that one instance uses is a triangle geometry of the top-level scene in world
+// space. Either way the top-level geometry ID is the FlatScene instance index.
 #pragma once
 
 #include "scene/flatten.h"
@@ -37,9 +38,13 @@ class EmbreeAccel {
   private:
     RTCDevice device_ = nullptr;
     RTCScene top_ = nullptr;
-    std::vector<RTCScene> meshes_;
+    std::vector<RTCScene> meshes_; // per mesh; null for a mesh placed in world space
     std::atomic<int64_t> bytes_{0};
     static bool monitor(void* self, ssize_t bytes, bool post);
+    RTCScene new_scene() const;
+    // Adds mesh m to s as geometry `id`, in object space, or in world space when to_world is set.
+    void attach_mesh(RTCScene s, uint32_t id, const FlatScene& scene, const MeshInfo& m,
+                     const Instance* to_world) const;
     void check(const char* what) const;
 };
 
