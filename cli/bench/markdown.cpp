@@ -1,5 +1,5 @@
-#include "bench/specialization.h"
 #include "bench/markdown.h"
+#include "bench/specialization.h"
 
 #include "bench/result_json.h"
 #include "compare/text_file.h"
@@ -201,13 +201,17 @@ std::string peer_section(const json& r) {
         "### Against Embree's path tracer tutorial (same run)\n\n"
         "Same scene (exported to OBJ; lights given on the tutorial's command line), camera, "
         "image, spp and path length; Russian roulette off in twinpath. Time per spp = (time at "
-        "N spp − time at 1 spp) / (N − 1), best of 2, for both programs. The tutorial does not "
-        "count rays: its Mrays/s is twinpath's rays per spp divided by the tutorial's time per "
-        "spp. Speed-up = tutorial time / twinpath time (> 1: twinpath is faster). Absolute "
-        "times on a shared CPU are indicative; the ratios are the result.\n\n"
-        "| scene | image | spp | D | threads | twinpath [ms/spp] | twinpath Mrays/s | tutorial "
-        "[ms/spp] | tutorial Mrays/s (inferred) | speed-up |\n"
-        "|---|---|---|---|---|---|---|---|---|---|\n";
+        "N spp − time at 1 spp) / (N − 1), best of 2, for both programs. The tutorial's rays "
+        "are counted in one more, untimed, pair of runs (its two trace calls wrapped by "
+        "`twinpath_ray_counter.so` through LD_PRELOAD; \"inferred\" where the module was "
+        "missing: twinpath's rays per spp over the tutorial's time per spp). Speed-up = "
+        "tutorial time / twinpath time, rays/s ratio = twinpath rays/s / tutorial rays/s "
+        "(> 1: twinpath is faster). Absolute times on a shared CPU are indicative; the ratios "
+        "are the result.\n\n"
+        "| scene | image | spp | D | threads | twinpath [ms/spp] | twinpath rays/spp | "
+        "twinpath Mrays/s | tutorial [ms/spp] | tutorial rays/spp | tutorial Mrays/s | speed-up "
+        "| rays/s ratio |\n"
+        "|---|---|---|---|---|---|---|---|---|---|---|---|---|\n";
     std::string scaling = "| scene | twinpath | tutorial |\n|---|---|---|\n", notes;
     for (const json& sc : r["scenes"]) {
         if (!sc.contains("peer")) continue;
@@ -216,15 +220,19 @@ std::string peer_section(const json& r) {
         for (const json& row : rows) {
             const json& ours = row["ours"];
             const json& peer = row["peer"];
-            md += fmt::format("| {} | {}×{} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
-                              sc["name"].get<std::string>(), sc["width"].get<int>(),
-                              sc["height"].get<int>(), p["spp"].get<int>(),
-                              sc["max_depth"].get<int>(), row["threads"].get<int>(),
-                              ms(ours["time_per_spp_s"]), g3(ours["mrays_per_s"]),
-                              peer["exit_code"] == 0
-                                  ? ms(peer["time_per_spp_s"])
-                                  : fmt::format("failed (exit {})", peer["exit_code"].get<int>()),
-                              g3(peer["mrays_per_s_inferred"]), g3(row["speedup"]));
+            const bool counted = peer.contains("mrays_per_s") && peer["mrays_per_s"].is_number();
+            md += fmt::format(
+                "| {} | {}×{} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} | {} |\n",
+                sc["name"].get<std::string>(), sc["width"].get<int>(), sc["height"].get<int>(),
+                p["spp"].get<int>(), sc["max_depth"].get<int>(), row["threads"].get<int>(),
+                ms(ours["time_per_spp_s"]), g3(ours["rays_per_spp"]), g3(ours["mrays_per_s"]),
+                peer["exit_code"] == 0
+                    ? ms(peer["time_per_spp_s"])
+                    : fmt::format("failed (exit {})", peer["exit_code"].get<int>()),
+                counted ? g3(peer["rays_per_spp"]) : std::string(kDash),
+                counted ? g3(peer["mrays_per_s"])
+                        : g3(peer["mrays_per_s_inferred"]) + " (inferred)",
+                g3(row["speedup"]), g3(row.value("rays_per_s_ratio", json(nullptr))));
         }
         if (rows.size() >= 2) {
             const json &a = rows[0], &b = rows[rows.size() - 1];

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <filesystem>
+#include <fstream>
 #include <limits>
 
 namespace fs = std::filesystem;
@@ -17,6 +18,19 @@ constexpr double kNever = std::numeric_limits<double>::infinity();
 
 double per_spp(double low, double high, uint32_t spp) {
     return (high - low) / double(spp - 1);
+}
+
+// Rays (intersect + occluded) of one tutorial run under the counting module; -1 when the module or
+// its output is missing or the run failed.
+double counted_rays(const std::vector<std::string>& argv, const std::string& log,
+                    const std::string& module, const std::string& count_file) {
+    fs::remove(count_file);
+    const ProcessRun p =
+        run_process(argv, log, {"LD_PRELOAD=" + module, "TWINPATH_RAY_COUNT_FILE=" + count_file});
+    std::ifstream in(count_file);
+    double intersect = 0, occluded = 0;
+    if (p.exit_code != 0 || !(in >> intersect >> occluded)) return -1;
+    return intersect + occluded;
 }
 
 } // namespace
@@ -48,7 +62,7 @@ PeerRun run_peer(const FlatScene& scene, const BenchOptions& options, const std:
     };
     run.peer_arguments = peer_args(run.spp, options.peer_threads.front());
 
-    const double steps = double(options.peer_threads.size() * kPeerRepeats * 3);
+    const double steps = double(options.peer_threads.size() * kPeerRepeats * 3 + 2);
     double step = 0;
     const auto advance = [&] {
         if (progress) progress(++step / steps);
@@ -90,11 +104,29 @@ PeerRun run_peer(const FlatScene& scene, const BenchOptions& options, const std:
         }
         run.rows.push_back(row);
     }
+
+    const std::string module =
+        (fs::read_symlink("/proc/self/exe").parent_path() / "twinpath_ray_counter.so").string();
+    if (fs::exists(module)) {
+        const std::string count_file = (fs::path(work_dir) / "ray_count.txt").string();
+        double counts[2];
+        int k = 0;
+        for (uint32_t spp : {1u, run.spp}) {
+            std::vector<std::string> argv = {options.peer_binary};
+            const std::vector<std::string> a = peer_args(spp, options.peer_threads.front());
+            argv.insert(argv.end(), a.begin(), a.end());
+            counts[k++] = counted_rays(argv, log, module, count_file);
+            advance();
+        }
+        if (counts[0] >= 0 && counts[1] > counts[0])
+            run.peer_rays_per_spp = (counts[1] - counts[0]) / double(run.spp - 1);
+    }
     return run;
 }
 
 nlohmann::json peer_json(const PeerRun& run) {
     nlohmann::json rows = nlohmann::json::array();
+    const bool counted = run.peer_rays_per_spp > 0;
     for (const PeerRow& r : run.rows) {
         const double ours = per_spp(r.ours_low_s, r.ours_high_s, run.spp);
         const double peer = per_spp(r.peer_low_s, r.peer_high_s, run.spp);
@@ -116,8 +148,16 @@ nlohmann::json peer_json(const PeerRun& run) {
                {"t_nspp_s", r.peer_high_s},
                {"time_per_spp_s", ok ? nlohmann::json(peer) : nlohmann::json(nullptr)},
                {"mrays_per_s_inferred",
-                ok ? nlohmann::json(1e-6 * r.ours_rays_per_spp / peer) : nlohmann::json(nullptr)}}},
-             {"speedup", ok ? nlohmann::json(peer / ours) : nlohmann::json(nullptr)}});
+                ok ? nlohmann::json(1e-6 * r.ours_rays_per_spp / peer) : nlohmann::json(nullptr)},
+               {"rays_per_spp",
+                counted ? nlohmann::json(run.peer_rays_per_spp) : nlohmann::json(nullptr)},
+               {"mrays_per_s", counted && ok ? nlohmann::json(1e-6 * run.peer_rays_per_spp / peer)
+                                             : nlohmann::json(nullptr)}}},
+             {"speedup", ok ? nlohmann::json(peer / ours) : nlohmann::json(nullptr)},
+             // Our rays/s over the tutorial's counted rays/s (> 1: twinpath traces faster).
+             {"rays_per_s_ratio", counted && ok ? nlohmann::json(r.ours_rays_per_spp / ours /
+                                                                 (run.peer_rays_per_spp / peer))
+                                                : nlohmann::json(nullptr)}});
     }
     return {
         {"spp", run.spp}, {"obj", run.obj}, {"peer_arguments", run.peer_arguments}, {"rows", rows}};

@@ -5,12 +5,12 @@
 // Time per spp (one sample of every pixel): both programs are timed at 1 and at N samples per
 // pixel and the difference is divided by N - 1, which cancels what does not scale with the samples
 // (the tutorial's process start, OBJ parsing and BVH build; our build is outside the render time
-// anyway). Each is the best of kPeerRepeats runs. The tutorial does not count its rays: its rays/s
-// is inferred as our rays per spp divided by its time per spp, i.e. its speed in the rays our
-// renderer traces for the same image. It ends paths whose throughput drops below 0.01 and sends one
-// shadow ray per light per vertex, so its own ray count differs; the time per spp is the number to
-// compare. Path length: our max depth D (scattering events) with Russian roulette off, the
-// tutorial's
+// anyway). Each is the best of kPeerRepeats runs. The tutorial does not count its rays; one more,
+// untimed, pair of runs (1 and N spp) with peer_ray_counter.c preloaded counts them, so its rays/s
+// is measured: its rays per spp over its time per spp. (It ends paths whose throughput drops
+// below 0.01 and sends one shadow ray per light per vertex, so its ray count differs from ours.)
+// Without the counter module its rays/s is inferred as our rays per spp over its time per spp. Path
+// length: our max depth D (scattering events) with Russian roulette off, the tutorial's
 // --max-path-length D ("1 = primary + shadow"): both sum paths of up to D scattering events.
 #pragma once
 
@@ -40,6 +40,7 @@ struct PeerRun {
     std::string obj;                         // the exported scene
     std::vector<std::string> peer_arguments; // after the binary, for the N-spp run
     std::vector<PeerRow> rows;
+    double peer_rays_per_spp = 0; // counted by the preloaded module; 0: not counted
 };
 
 // `scene` is the peer variant, flattened at the benchmark's size, with min depth = max depth.

@@ -8,10 +8,15 @@
 
 namespace tp::bench {
 
-ProcessRun run_process(const std::vector<std::string>& argv, const std::string& log_path) {
+ProcessRun run_process(const std::vector<std::string>& argv, const std::string& log_path,
+                       const std::vector<std::string>& env) {
     std::vector<char*> args;
     for (const std::string& a : argv) args.push_back(const_cast<char*>(a.c_str()));
     args.push_back(nullptr);
+    std::vector<char*> envp;
+    for (char** e = environ; *e; ++e) envp.push_back(*e);
+    for (const std::string& e : env) envp.push_back(const_cast<char*>(e.c_str()));
+    envp.push_back(nullptr);
     ProcessRun r;
     const auto t0 = std::chrono::steady_clock::now();
     const pid_t pid = fork();
@@ -23,7 +28,7 @@ ProcessRun run_process(const std::vector<std::string>& argv, const std::string& 
             dup2(fd, STDERR_FILENO);
             close(fd);
         }
-        execv(args[0], args.data());
+        execve(args[0], args.data(), envp.data());
         _exit(127);
     }
     int status = 0;

@@ -11,7 +11,9 @@ struct ProcessRun {
     double wall_s = 0;  // from start to exit
 };
 
-// Runs argv[0] (a path) with the arguments, stdout and stderr appended to `log_path`.
-ProcessRun run_process(const std::vector<std::string>& argv, const std::string& log_path);
+// Runs argv[0] (a path) with the arguments, stdout and stderr appended to `log_path`, in this
+// process's environment plus `env` ("NAME=value" entries).
+ProcessRun run_process(const std::vector<std::string>& argv, const std::string& log_path,
+                       const std::vector<std::string>& env = {});
 
 } // namespace tp::bench

@@ -149,6 +149,16 @@ void check_peer_files(const std::string& out, const json& r, const tp::test::Pro
         }
         CHECK(csv.rows.size() == 2);
         CHECK(fs::exists(r["scenes"][0]["peer"]["obj"].get<std::string>()));
+        // The tutorial's counted rays (peer_ray_counter.c): each sample of each pixel starts
+        // with one camera ray (rtcIntersect1), and a path of at most D scattering events under
+        // the peer variant's single light traces at most D + 1 extension and D + 1 shadow rays.
+        const json& sc = r["scenes"][0];
+        const double pixels = sc["width"].get<double>() * sc["height"].get<double>();
+        const double depth = sc["max_depth"].get<double>();
+        const json& counted = rows[0]["peer"]["rays_per_spp"];
+        REQUIRE(counted.is_number());
+        CHECK(counted.get<double>() >= pixels);
+        CHECK(counted.get<double>() <= 2.0 * (depth + 1.0) * pixels);
     } else {
         WARN("no " << kPeerBinary << ": checking the 'peer absent' report instead");
         CHECK(csv.rows.empty());
