@@ -55,18 +55,36 @@ struct SurfacePoint {
     vec2 uv;
 };
 
-// The magnitude of each world coordinate in the computation of a point of the triangle:
-// m_c = sum_k |M_ck| max_i |v_ik| + |T_c| for the instance's rows (M, T) (offset.h).
+// The object magnitude of each world coordinate of a point of the triangle:
+// m_c = sum_k |M_ck| max_i |v_ik| for the instance's rows (M, T); T is not in it (offset.h).
 inline vec3 triangle_coordinate_magnitude(Instance t, vec3 v0, vec3 v1, vec3 v2) {
     vec3 b = max(max(abs(v0), abs(v1)), abs(v2));
-    vec4 h = vec4(b.x, b.y, b.z, 1.0f);
+    vec4 h = vec4(b.x, b.y, b.z, 0.0f);
     return vec3(dot(abs(t.to_world0), h), dot(abs(t.to_world1), h), dot(abs(t.to_world2), h));
+}
+
+// How the rounding of the intersector's transform of an origin into object space reaches world
+// coordinate c, in units of u |p| (offset.h): mix_c = sum_k |M_ck| n_k sum_j |M'_kj|, n_k the
+// number of non-zero entries of the inverse's row k. 1 for an axis-aligned instance (one exact
+// product per row), up to 9 for a rotated one.
+inline float instance_row_rounding(vec4 r) {
+    vec3 a = abs(vec3(r.x, r.y, r.z));
+    float n = (a.x > 0.0f ? 1.0f : 0.0f) + (a.y > 0.0f ? 1.0f : 0.0f) + (a.z > 0.0f ? 1.0f : 0.0f);
+    return n * (a.x + a.y + a.z);
+}
+
+inline vec3 instance_rounding_mix(Instance t) {
+    vec4 w = vec4(instance_row_rounding(t.to_object0), instance_row_rounding(t.to_object1),
+                  instance_row_rounding(t.to_object2), 0.0f);
+    return vec3(dot(abs(t.to_world0), w), dot(abs(t.to_world1), w), dot(abs(t.to_world2), w));
 }
 
 inline SurfacePoint surface_point(Instance t, vec3 v0, vec3 v1, vec3 v2, vec2 bary) {
     SurfacePoint s;
     s.p = instance_point_to_world(t, barycentric_mix3(v0, v1, v2, bary));
-    s.p_error = point_error_bound(triangle_coordinate_magnitude(t, v0, v1, v2), s.p);
+    vec3 a = abs(s.p);
+    s.p_error = point_error_bound(triangle_coordinate_magnitude(t, v0, v1, v2), s.p) +
+                FLOAT_UNIT_ROUNDOFF * max(max(a.x, a.y), a.z) * instance_rounding_mix(t);
     s.ng = normalize(instance_normal_to_world(t, cross(v1 - v0, v2 - v0)));
     s.ns = s.ng;
     s.uv = vec2(0.0f);
@@ -82,15 +100,17 @@ inline SurfacePoint surface_point(Instance t, vec3 v0, vec3 v1, vec3 v2, vec2 ba
 // triangle. The step q + dot(p - q, ng) ng then puts q back on p's plane, so that the distance
 // from the plane stays the one p_error bounds, plus the rounding of that step: the difference
 // and the dot (gamma(4) |p - q| along ng, below sqrt(3) gamma(4) < 8u times its largest
-// coordinate, taken as OFFSET_GAMMA_P). A ray in the plane (dot(d, ng) = 0) or a degenerate
+// coordinate: SNAP_GAMMA). A ray in the plane (dot(d, ng) = 0) or a degenerate
 // triangle (ng NaN) keeps the barycentric point.
+const float SNAP_GAMMA = 8.0f * FLOAT_UNIT_ROUNDOFF;
+
 inline void surface_snap_to_ray(INOUT(SurfacePoint) s, vec3 o, vec3 d) {
     float t = dot(s.p - o, s.ng) / dot(d, s.ng);
     if (!(abs(t) < FLOAT_MAX)) return;
     vec3 q = o + t * d;
     vec3 e = abs(s.p - q);
     s.p = q + dot(s.p - q, s.ng) * s.ng;
-    s.p_error += vec3(OFFSET_GAMMA_P * max(max(e.x, e.y), e.z));
+    s.p_error += vec3(SNAP_GAMMA * max(max(e.x, e.y), e.z));
 }
 
 // Interpolated vertex normals; flipped onto the geometric side when the mesh's normals

@@ -169,3 +169,51 @@ TEST_CASE("the snapped hit point of a floor 2e8 wide is where the ray meets it",
     CHECK(worst_bary > 1.0); // what the snap is for
     CHECK(worst_snap < 1e-5);
 }
+
+TEST_CASE("floor rays next to a resting sphere start outside it at 1e5 along every axis",
+          "[offset]") {
+    // The stress case "translate 1e5 (all axes)": the floor (make_quad scaled by 2) and the
+    // sphere of radius 0.5 resting on it at (0.2, 0.5, 0), moved by (-1e5, 1e5, 1e5). A floor
+    // point at distance rho from the contact has the sphere h = 0.5 - sqrt(0.25 - rho^2) above
+    // it (0.0635 at rho = 0.25). With the translation counted in the object magnitudes at 40 u,
+    // the offset was 50 u 1e5 = 0.30 and the new origins of every floor point with rho < 0.55
+    // lay inside the sphere: their paths stayed there, 51 black pixels at 64 x 64 on all three
+    // engines. The hit point's true error along y is a few roundings of 1e5 (u 1e5 = 0.006).
+    const tp::vec3 shift(-1e5f, 1e5f, 1e5f);
+    const tp::Instance floor =
+        make_instance(glm::scale(glm::translate(glm::mat4(1.0f), shift), glm::vec3(2.0f)));
+    const tp::vec3 v0(-1.0f, 0.0f, 1.0f), v1(1.0f, 0.0f, 1.0f), v2(1.0f, 0.0f, -1.0f),
+        v3(-1.0f, 0.0f, -1.0f);
+    const glm::dvec3 centre = glm::dvec3(0.2, 0.5, 0.0) + glm::dvec3(shift);
+    const tp::vec3 eye = tp::vec3(0.0f, 1.3f, 3.6f) + shift;
+    int rays = 0;
+    for (int i = 0; i < 64; ++i) {
+        const float angle = 6.2831853f * float(i) / 64.0f;
+        for (float rho : {0.25f, 0.35f, 0.5f}) {
+            const tp::vec3 target =
+                tp::vec3(0.2f + rho * std::cos(angle), 0.0f, rho * std::sin(angle)) + shift;
+            const tp::vec3 d = glm::normalize(target - eye);
+            const tp::vec3 o = tp::instance_point_to_object(floor, eye);
+            const tp::vec3 od = tp::instance_vector_to_object(floor, d);
+            tp::vec3 tuv;
+            tp::SurfacePoint sp;
+            if (tp::intersect_triangle(o, tp::watertight_ray(od), v0, v1, v2, tp::FLOAT_MAX, tuv))
+                sp = tp::surface_point(floor, v0, v1, v2, tp::vec2(tuv.y, tuv.z));
+            else if (tp::intersect_triangle(o, tp::watertight_ray(od), v0, v2, v3, tp::FLOAT_MAX,
+                                            tuv))
+                sp = tp::surface_point(floor, v0, v2, v3, tp::vec2(tuv.y, tuv.z));
+            else
+                continue; // behind the sphere's silhouette does not matter here: no floor hit
+            tp::surface_snap_to_ray(sp, eye, d);
+            const tp::Ray r = tp::spawn_ray(sp.p, sp.p_error, sp.ng, tp::vec3(0.0f, 1.0f, 0.0f));
+            const double height = double(r.origin.y) - 1e5;
+            CAPTURE(i, rho, height);
+            REQUIRE(height > 0.0); // above the floor
+            REQUIRE_FALSE(hits_again(floor, v0, v1, v2, r));
+            REQUIRE_FALSE(hits_again(floor, v0, v2, v3, r));
+            REQUIRE(glm::length(glm::dvec3(r.origin) - centre) > 0.5); // outside the sphere
+            ++rays;
+        }
+    }
+    CHECK(rays == 192);
+}
