@@ -102,6 +102,7 @@ inline bool intersect_aabb(vec3 org, vec3 inv_dir, vec3 lo, vec3 hi, float tmax,
 struct WatertightRay {
     uvec3 k;    // kx, ky, kz
     vec3 shear; // Sx = d_kx / d_kz, Sy = d_ky / d_kz, Sz = 1 / d_kz
+    vec3 dir;   // d, for the distance (intersect_triangle)
 };
 
 inline WatertightRay watertight_ray(vec3 dir) {
@@ -117,6 +118,7 @@ inline WatertightRay watertight_ray(vec3 dir) {
     WatertightRay r;
     r.k = uvec3(kx, ky, kz);
     r.shear = vec3(dir[kx] / dir[kz], dir[ky] / dir[kz], 1.0f / dir[kz]);
+    r.dir = dir;
     return r;
 }
 
@@ -139,10 +141,16 @@ inline bool intersect_triangle(vec3 org, WatertightRay r, vec3 v0, vec3 v1, vec3
     if ((u < 0.0f || v < 0.0f || w < 0.0f) && (u > 0.0f || v > 0.0f || w > 0.0f)) return false;
     float det = u + v + w;
     if (det == 0.0f) return false; // the ray lies in the triangle's plane
-    float t_scaled =
-        u * (r.shear.z * a[r.k.z]) + v * (r.shear.z * b[r.k.z]) + w * (r.shear.z * c[r.k.z]);
+    // The distance from the triangle's plane, t = (v0 - o) . n / (d . n) with n = (v1 - v0) x
+    // (v2 - v0), not Woop's (u z_a + v z_b + w z_c) / det: that sums the vertices' sheared depths,
+    // each rounded at the size of its coordinates, so on a triangle of size L its error is ~u L
+    // whatever the distance (floor vertices at +-1e8: units, and the floor came out in front of a
+    // sphere standing on it; docs/stress.md). The plane's t errs by ~u of the distance and the
+    // plane's offset, and is exact for an axis-aligned plane. The edge functions above still
+    // decide inside or outside, so the test stays watertight.
+    vec3 n = cross(v1 - v0, v2 - v0);
+    float t = dot(a, n) / dot(r.dir, n);
     float inv_det = 1.0f / det;
-    float t = t_scaled * inv_det;
     if (!(t > 0.0f && t < tmax)) return false;
     tuv = vec3(t, v * inv_det, w * inv_det);
     return true;
