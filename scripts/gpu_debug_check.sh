@@ -44,8 +44,12 @@ for scene in cornell cornell_glossy spheres furnace; do
     check "$scene $px cpu log" 0 "$tp" render "$scene" $common -o "$base-cpu.exr" --debug-log "$base-cpu.json"
     check "$scene $px compute log" 0 "$tp" render "$scene" --backend vulkan --vk-mode compute $common -o "$base-compute.exr" --debug-log "$base-compute.json"
     check "$scene $px pipeline log" 0 "$tp" render "$scene" --backend vulkan --vk-mode pipeline $common -o "$base-pipeline.exr" --debug-log "$base-pipeline.json"
-    check "$scene $px pathdiff cpu pipeline" 0 "$tp" pathdiff "$base-cpu.json" "$base-pipeline.json"
-    check "$scene $px pathdiff compute pipeline" 0 "$tp" pathdiff "$base-compute.json" "$base-pipeline.json"
+    # Pipeline mode offsets new rays 4 times as far (shared/offset.h, TP_OFFSET_INTERSECTOR_SLACK):
+    # its origins drift from the CPU's by up to 3 offset bounds per bounce, 1.1e-4 in t after 8
+    # furnace bounces on the H200, past pathdiff's default 1e-4. 1e-3 still separates a
+    # divergence (another triangle, lobe or light) from that drift.
+    check "$scene $px pathdiff cpu pipeline" 0 "$tp" pathdiff --geometry-tolerance 1e-3 "$base-cpu.json" "$base-pipeline.json"
+    check "$scene $px pathdiff compute pipeline" 0 "$tp" pathdiff --geometry-tolerance 1e-3 "$base-compute.json" "$base-pipeline.json"
   done
   check "$scene cpu aov" 0 "$tp" render "$scene" $size --spp 1 --aov all -o "$out/$scene-aov-cpu.exr"
   check "$scene pipeline aov" 0 "$tp" render "$scene" --backend vulkan --vk-mode pipeline $size --spp 1 --aov all -o "$out/$scene-aov-pipeline.exr"

@@ -10,8 +10,9 @@
 //   bool trace_occluded(Ray ray)                   any hit in [0, ray.tmax]
 //
 // Vulkan's interval is closed where the BVH's is open, (0, tmax); the two differ only for a hit
-// exactly at an end point. Ray origins leave surfaces by the ULP offset (shared/offset.h) and
-// shadow rays end at an offset light point (shared/path.h), so neither end lies on a surface.
+// exactly at an end point. Ray origins leave surfaces by the error-bound offset (shared/offset.h;
+// 4 times the bound here, render_pipeline.rgen) and shadow rays end at an offset light point
+// (shared/path.h), so neither end lies on a surface.
 // All geometry is opaque (built with VK_GEOMETRY_OPAQUE_BIT_KHR; the rays say so too), so no
 // any-hit shader ever runs. gl_HitTEXT is the parameter of the world-space ray: the instance
 // transform leaves t unchanged, as in trace_bvh.glsl.

@@ -59,11 +59,23 @@ inline vec3 point_error_bound(vec3 m, vec3 p) {
     return OFFSET_GAMMA_M * m + vec3(OFFSET_GAMMA_P * max(max(a.x, a.y), a.z));
 }
 
+// The bound's factor for an intersector whose rounding it does not derive: 1 for Embree and the
+// compute mode's watertight test, whose re-test of a triangle the terms above count. The
+// pipeline mode's traversal is the driver's, undocumented; render_pipeline.rgen sets 4. Measured
+// on the H200 at 2048 spp, compute against pipeline mode: with 1, pipeline mode is darker where
+// rays leave surfaces at grazing angles (2-3 % in the corner tiles of cornell_glossy; p = 2e-5
+// cornell, 1e-6 cornell_glossy, 9e-11 spheres: its new rays met their own surface again); with 4
+// and with 16, p = 0.10, 1 and 1 (docs/stress.md).
+#ifndef TP_OFFSET_INTERSECTOR_SLACK
+#define TP_OFFSET_INTERSECTOR_SLACK 1.0f
+#endif
+
 // p: the computed point; p_error: a bound on |p_c - exact_c| for each coordinate c; n: the
 // unit geometric normal on the side the new ray leaves towards. The origin moves along n by
-// dot(|n|, p_error), the largest distance along n that errors within p_error can make.
+// dot(|n|, p_error), the largest distance along n that errors within p_error can make (times
+// the intersector's slack).
 inline vec3 offset_ray_origin(vec3 p, vec3 p_error, vec3 n) {
-    float d = dot(abs(n), p_error);
+    float d = TP_OFFSET_INTERSECTOR_SLACK * dot(abs(n), p_error);
     return p + d * n;
 }
 
