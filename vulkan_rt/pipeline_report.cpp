@@ -6,6 +6,7 @@
 #include <fmt/format.h>
 
 #include <utility>
+#include <vector>
 
 namespace tp {
 namespace {
@@ -49,6 +50,18 @@ PipelineStatistic statistic(const VkPipelineExecutableStatisticKHR& s) {
     return out;
 }
 
+// Vulkan's two-call enumeration of output structures, whose sType must be set before the fill.
+template <typename T, typename Call>
+std::vector<T> enumerate(VkStructureType type, const char* what, Call call) {
+    uint32_t n = 0;
+    vk_check(call(&n, nullptr), what);
+    std::vector<T> items(n);
+    for (T& item : items) item.sType = type;
+    vk_check(call(&n, items.data()), what);
+    items.resize(n);
+    return items;
+}
+
 // Every executable of `pipeline` with every statistic (VK_KHR_pipeline_executable_properties).
 std::vector<PipelineExecutable> executables(VkDevice device, VkPipeline pipeline) {
     const auto get_properties = device_function<PFN_vkGetPipelineExecutablePropertiesKHR>(
@@ -58,14 +71,13 @@ std::vector<PipelineExecutable> executables(VkDevice device, VkPipeline pipeline
     VkPipelineInfoKHR pi{};
     pi.sType = VK_STRUCTURE_TYPE_PIPELINE_INFO_KHR;
     pi.pipeline = pipeline;
-    uint32_t n = 0;
-    vk_check(get_properties(device, &pi, &n, nullptr), "listing pipeline executables");
-    std::vector<VkPipelineExecutablePropertiesKHR> props(n);
-    for (VkPipelineExecutablePropertiesKHR& p : props)
-        p.sType = VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_PROPERTIES_KHR;
-    vk_check(get_properties(device, &pi, &n, props.data()), "listing pipeline executables");
+    const auto props = enumerate<VkPipelineExecutablePropertiesKHR>(
+        VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_PROPERTIES_KHR, "listing pipeline executables",
+        [&](uint32_t* n, VkPipelineExecutablePropertiesKHR* p) {
+            return get_properties(device, &pi, n, p);
+        });
     std::vector<PipelineExecutable> out;
-    for (uint32_t i = 0; i < n; ++i) {
+    for (uint32_t i = 0; i < uint32_t(props.size()); ++i) {
         PipelineExecutable e;
         e.stages = shader_stage_names(props[i].stages);
         e.name = props[i].name;
@@ -75,13 +87,13 @@ std::vector<PipelineExecutable> executables(VkDevice device, VkPipeline pipeline
         ei.sType = VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_INFO_KHR;
         ei.pipeline = pipeline;
         ei.executableIndex = i;
-        uint32_t m = 0;
-        vk_check(get_statistics(device, &ei, &m, nullptr), "reading pipeline statistics");
-        std::vector<VkPipelineExecutableStatisticKHR> stats(m);
-        for (VkPipelineExecutableStatisticKHR& s : stats)
-            s.sType = VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_STATISTIC_KHR;
-        vk_check(get_statistics(device, &ei, &m, stats.data()), "reading pipeline statistics");
-        for (uint32_t k = 0; k < m; ++k) e.statistics.push_back(statistic(stats[k]));
+        const auto stats = enumerate<VkPipelineExecutableStatisticKHR>(
+            VK_STRUCTURE_TYPE_PIPELINE_EXECUTABLE_STATISTIC_KHR, "reading pipeline statistics",
+            [&](uint32_t* m, VkPipelineExecutableStatisticKHR* st) {
+                return get_statistics(device, &ei, m, st);
+            });
+        for (const VkPipelineExecutableStatisticKHR& s : stats)
+            e.statistics.push_back(statistic(s));
         out.push_back(std::move(e));
     }
     return out;
