@@ -6,16 +6,12 @@
 # included, so editing any of them (common/shared/*.h too) rebuilds the header and whatever
 # embeds it. shaders/ and common/ are always on the include path.
 find_program(GLSLANG_VALIDATOR glslangValidator REQUIRED)
+include(${CMAKE_CURRENT_LIST_DIR}/glslang_flags.cmake)
 
 function(tp_embed_spirv)
   cmake_parse_arguments(S "" "OUTPUT;SOURCE;NAME" "INCLUDES;DEFINES" ${ARGN})
-  set(includes -I${PROJECT_SOURCE_DIR}/shaders -I${PROJECT_SOURCE_DIR}/common)
-  foreach(dir IN LISTS S_INCLUDES)
-    list(APPEND includes -I${dir})
-  endforeach()
-  foreach(def IN LISTS S_DEFINES)
-    list(APPEND includes -D${def})
-  endforeach()
+  tp_glslang_flags(includes INCLUDES ${PROJECT_SOURCE_DIR}/shaders ${PROJECT_SOURCE_DIR}/common
+                   ${S_INCLUDES} DEFINES ${S_DEFINES})
   get_filename_component(out_dir ${S_OUTPUT} DIRECTORY)
   add_custom_command(
     OUTPUT ${S_OUTPUT}

@@ -93,7 +93,7 @@ json run_specialization(const FlatScene& scene, const Backend& backend, const Be
     // --pipeline-stats: what the driver compiled each variant into (docs/gpu.md).
     if (o.pipeline_stats && t[0].last.pipeline)
         for (const auto& [key, timing] : {std::pair{"all", &t[0]}, {"specialized", &t[1]}})
-            j[key]["pipeline"] = json::parse(pipeline_stats_json(timing->last));
+            j[key]["pipeline"] = pipeline_stats_json(timing->last);
     return j;
 }
 

@@ -38,7 +38,16 @@ nlohmann::json statistic_json(const PipelineStatistic& st) {
     return j;
 }
 
-nlohmann::json pipeline_json(const RenderStats& s) {
+void write_json(const std::string& path, const nlohmann::json& j) {
+    std::ofstream out(path);
+    if (!out) runtime_error("cannot write {}", path);
+    out << j.dump(2) << "\n";
+    if (!out) runtime_error("cannot write {}", path);
+}
+
+} // namespace
+
+nlohmann::json pipeline_stats_json(const RenderStats& s) {
     if (!s.pipeline) return nullptr;
     const PipelineReport& p = *s.pipeline;
     nlohmann::json j = {{"mode", s.mode},
@@ -60,15 +69,6 @@ nlohmann::json pipeline_json(const RenderStats& s) {
     }
     return j;
 }
-
-void write_json(const std::string& path, const nlohmann::json& j) {
-    std::ofstream out(path);
-    if (!out) runtime_error("cannot write {}", path);
-    out << j.dump(2) << "\n";
-    if (!out) runtime_error("cannot write {}", path);
-}
-
-} // namespace
 
 void write_stats_json(const std::string& path, const RenderStats& s) {
     nlohmann::json j;
@@ -99,10 +99,6 @@ void write_stats_json(const std::string& path, const RenderStats& s) {
     write_json(path, j);
 }
 
-std::string pipeline_stats_json(const RenderStats& s) {
-    return pipeline_json(s).dump();
-}
-
 void write_pipeline_stats_json(const std::string& path, const RenderStats& s) {
     const auto extra = [&](const char* key) {
         const auto it = s.extra.find(key);
@@ -112,7 +108,7 @@ void write_pipeline_stats_json(const std::string& path, const RenderStats& s) {
                       {"scene", s.scene},
                       {"device", s.device},
                       {"driver", extra("driver")},
-                      {"pipelines", nlohmann::json::array({pipeline_json(s)})}});
+                      {"pipelines", nlohmann::json::array({pipeline_stats_json(s)})}});
 }
 
 } // namespace tp

@@ -2,6 +2,8 @@
 // each kind, and how many samples were dropped as NaN/Inf.
 #pragma once
 
+#include <nlohmann/json_fwd.hpp>
+
 #include <cstdint>
 #include <map>
 #include <optional>
@@ -93,10 +95,10 @@ struct RenderStats {
 // creation feedback (`pipeline_creation`).
 void write_stats_json(const std::string& path, const RenderStats& s);
 
-// The render pipeline of a Vulkan render as the text of a JSON object (mode, feature variant
-// and mask, creation feedback, executables with their statistics), for `--pipeline-stats`
-// (docs/gpu.md); "null" for a render without one.
-std::string pipeline_stats_json(const RenderStats& s);
+// The render pipeline of a Vulkan render as a JSON object (mode, feature variant and mask,
+// creation feedback, executables with their statistics), for `--pipeline-stats` (docs/gpu.md);
+// null for a render without one.
+nlohmann::json pipeline_stats_json(const RenderStats& s);
 
 // `twinpath render --pipeline-stats FILE`: the device, the scene and pipeline_stats_json.
 void write_pipeline_stats_json(const std::string& path, const RenderStats& s);

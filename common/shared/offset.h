@@ -52,6 +52,12 @@ const float FLOAT_UNIT_ROUNDOFF = 5.9604645e-8f;
 const float OFFSET_GAMMA_M = 40.0f * FLOAT_UNIT_ROUNDOFF;
 const float OFFSET_GAMMA_P = 3.0f * FLOAT_UNIT_ROUNDOFF;
 
+// The magnitude of each coordinate over a triangle's vertices, max_i |v_ik|: the size at which
+// a barycentric mix of them rounds.
+inline vec3 triangle_vertex_magnitude(vec3 v0, vec3 v1, vec3 v2) {
+    return max(max(abs(v0), abs(v1)), abs(v2));
+}
+
 // The bound above for a point p whose object magnitudes are m, without the intersector's
 // transform of the origin (surface_point adds it for its instance).
 inline vec3 point_error_bound(vec3 m, vec3 p) {

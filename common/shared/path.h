@@ -83,10 +83,10 @@ inline Ray shadow_ray(vec3 p, vec3 p_error, vec3 ng, LightSample ls, Light l) {
     Ray r = spawn_ray(p, p_error, ng, ls.wi);
     if (ls.dist >= FLOAT_MAX) return r;
     vec3 target = ls.point;
-    if (l.type == LIGHT_TRIANGLE) {
-        vec3 m = max(max(abs(l.p0), abs(l.p1)), abs(l.p2));
-        target = offset_ray_origin(target, point_error_bound(m, target), triangle_light_normal(l));
-    }
+    if (l.type == LIGHT_TRIANGLE)
+        target = offset_ray_origin(
+            target, point_error_bound(triangle_vertex_magnitude(l.p0, l.p1, l.p2), target),
+            triangle_light_normal(l));
     vec3 d = target - r.origin;
     float len = length(d);
     r.dir = len > 0.0f ? d / len : ls.wi;

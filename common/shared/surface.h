@@ -58,7 +58,7 @@ struct SurfacePoint {
 // The object magnitude of each world coordinate of a point of the triangle:
 // m_c = sum_k |M_ck| max_i |v_ik| for the instance's rows (M, T); T is not in it (offset.h).
 inline vec3 triangle_coordinate_magnitude(Instance t, vec3 v0, vec3 v1, vec3 v2) {
-    vec3 b = max(max(abs(v0), abs(v1)), abs(v2));
+    vec3 b = triangle_vertex_magnitude(v0, v1, v2);
     vec4 h = vec4(b.x, b.y, b.z, 0.0f);
     return vec3(dot(abs(t.to_world0), h), dot(abs(t.to_world1), h), dot(abs(t.to_world2), h));
 }
