@@ -12,6 +12,18 @@
 #include <utility>
 #include <vector>
 
+// The path loop is compiled twice, for baseline x86-64 and for x86-64-v3 (AVX2, FMA, BMI2), and
+// the dynamic loader picks the second where the CPU has it (GCC's function multiversioning, an
+// ifunc): the reference still runs on any x86-64 and is 9-11 % faster per spp on cornell where
+// it can (BENCHMARKS.md). integrator.cpp is compiled with -ffp-contract=off
+// (cpu_ref/CMakeLists.txt): neither copy fuses a multiply-add, so both give bit-identical
+// images (measured: 0 difference on cornell, cornell_glossy, spheres).
+#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
+#define TP_PATH_LOOP_CLONES __attribute__((target_clones("default", "arch=x86-64-v3")))
+#else
+#define TP_PATH_LOOP_CLONES
+#endif
+
 namespace tp {
 
 class CpuIntegrator {
@@ -39,8 +51,8 @@ class CpuIntegrator {
     // The loop itself; Record: fill a PathVertex per vertex into *log (else nothing of it is
     // compiled).
     template <uint32_t Fixed, bool Record>
-    vec3 trace_path(uint32_t x, uint32_t y, uint32_t sample_index, RayCounts& rays,
-                    std::vector<PathVertex>* log) const;
+    TP_PATH_LOOP_CLONES vec3 trace_path(uint32_t x, uint32_t y, uint32_t sample_index,
+                                        RayCounts& rays, std::vector<PathVertex>* log) const;
     using Loop = vec3 (CpuIntegrator::*)(uint32_t, uint32_t, uint32_t, RayCounts&) const;
     template <size_t... I>
     static std::array<Loop, sizeof...(I)> make_loops(std::index_sequence<I...>);

@@ -9,11 +9,16 @@
 #include "shared/surface.h"
 #include "shared/texture.h"
 
+#include <vector>
+
 namespace tp {
 
 class SceneAccess {
   public:
-    explicit SceneAccess(const FlatScene& s) : s_(s) {}
+    explicit SceneAccess(const FlatScene& s) : s_(s) {
+        error_terms_.reserve(s.instances.size());
+        for (const Instance& inst : s.instances) error_terms_.push_back(instance_error_terms(inst));
+    }
 
     const FlatScene& scene() const { return s_; }
 
@@ -26,8 +31,9 @@ class SceneAccess {
         const MeshInfo& m = s_.meshes[inst.mesh];
         const uvec3 t = s_.triangles[m.first_triangle + h.primitive];
         const uint32_t base = m.first_vertex;
-        SurfacePoint sp = surface_point(inst, s_.positions[base + t.x], s_.positions[base + t.y],
-                                        s_.positions[base + t.z], h.bary);
+        SurfacePoint sp =
+            surface_point_with(inst, error_terms_[h.instance], s_.positions[base + t.x],
+                               s_.positions[base + t.y], s_.positions[base + t.z], h.bary);
         if (m.flags & MESH_HAS_NORMALS)
             surface_set_shading_normal(sp, inst, s_.normals[base + t.x], s_.normals[base + t.y],
                                        s_.normals[base + t.z], h.bary);
@@ -98,6 +104,9 @@ class SceneAccess {
 
   private:
     const FlatScene& s_;
+    // Per instance, what each hit's error bound needs from it (shared/surface.h): computed
+    // once here instead of at every hit, 5 % of the path loop's instructions on cornell.
+    std::vector<InstanceErrorTerms> error_terms_;
 };
 
 } // namespace tp

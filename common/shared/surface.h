@@ -55,13 +55,15 @@ struct SurfacePoint {
     vec2 uv;
 };
 
-// The object magnitude of each world coordinate of a point of the triangle:
-// m_c = sum_k |M_ck| max_i |v_ik| for the instance's rows (M, T); T is not in it (offset.h).
-inline vec3 triangle_coordinate_magnitude(Instance t, vec3 v0, vec3 v1, vec3 v2) {
-    vec3 b = triangle_vertex_magnitude(v0, v1, v2);
-    vec4 h = vec4(b.x, b.y, b.z, 0.0f);
-    return vec3(dot(abs(t.to_world0), h), dot(abs(t.to_world1), h), dot(abs(t.to_world2), h));
-}
+// What the error bound of a hit point needs from its instance (offset.h), a function of the
+// instance alone: the CPU computes it once per instance (cpu_ref/scene_access.h), the shaders
+// at each hit, where a buffer for it would cost a load as large as the arithmetic.
+struct InstanceErrorTerms {
+    vec4 abs_row0; // |M| row by row (0 in w: T is not in the object magnitude)
+    vec4 abs_row1;
+    vec4 abs_row2;
+    vec3 rounding_mix; // instance_rounding_mix
+};
 
 // How the rounding of the intersector's transform of an origin into object space reaches world
 // coordinate c, in units of u |p| (offset.h): mix_c = sum_k |M_ck| n_k sum_j |M'_kj|, n_k the
@@ -79,16 +81,38 @@ inline vec3 instance_rounding_mix(Instance t) {
     return vec3(dot(abs(t.to_world0), w), dot(abs(t.to_world1), w), dot(abs(t.to_world2), w));
 }
 
-inline SurfacePoint surface_point(Instance t, vec3 v0, vec3 v1, vec3 v2, vec2 bary) {
+inline InstanceErrorTerms instance_error_terms(Instance t) {
+    InstanceErrorTerms e;
+    e.abs_row0 = vec4(abs(vec3(t.to_world0.x, t.to_world0.y, t.to_world0.z)), 0.0f);
+    e.abs_row1 = vec4(abs(vec3(t.to_world1.x, t.to_world1.y, t.to_world1.z)), 0.0f);
+    e.abs_row2 = vec4(abs(vec3(t.to_world2.x, t.to_world2.y, t.to_world2.z)), 0.0f);
+    e.rounding_mix = instance_rounding_mix(t);
+    return e;
+}
+
+// The object magnitude of each world coordinate of a point of the triangle:
+// m_c = sum_k |M_ck| max_i |v_ik| for the instance's rows (M, T); T is not in it (offset.h).
+inline vec3 triangle_coordinate_magnitude(InstanceErrorTerms e, vec3 v0, vec3 v1, vec3 v2) {
+    vec4 b = vec4(triangle_vertex_magnitude(v0, v1, v2), 0.0f);
+    return vec3(dot(e.abs_row0, b), dot(e.abs_row1, b), dot(e.abs_row2, b));
+}
+
+// e = instance_error_terms(t).
+inline SurfacePoint surface_point_with(Instance t, InstanceErrorTerms e, vec3 v0, vec3 v1, vec3 v2,
+                                       vec2 bary) {
     SurfacePoint s;
     s.p = instance_point_to_world(t, barycentric_mix3(v0, v1, v2, bary));
     vec3 a = abs(s.p);
-    s.p_error = point_error_bound(triangle_coordinate_magnitude(t, v0, v1, v2), s.p) +
-                FLOAT_UNIT_ROUNDOFF * max(max(a.x, a.y), a.z) * instance_rounding_mix(t);
+    s.p_error = point_error_bound(triangle_coordinate_magnitude(e, v0, v1, v2), s.p) +
+                FLOAT_UNIT_ROUNDOFF * max(max(a.x, a.y), a.z) * e.rounding_mix;
     s.ng = normalize(instance_normal_to_world(t, cross(v1 - v0, v2 - v0)));
     s.ns = s.ng;
     s.uv = vec2(0.0f);
     return s;
+}
+
+inline SurfacePoint surface_point(Instance t, vec3 v0, vec3 v1, vec3 v2, vec2 bary) {
+    return surface_point_with(t, instance_error_terms(t), v0, v1, v2, bary);
 }
 
 // Moves the hit point to where the ray (o, d) meets the triangle's plane. Rebuilt from float
