@@ -1,5 +1,6 @@
 #include "cpu_ref/embree_accel.h"
 
+#include "scene/world_vertex.h"
 #include "util/error.h"
 
 #include <cmath>
@@ -26,13 +27,6 @@ const char* embree_error_name(RTCError e) {
     default:
         return "unknown error";
     }
-}
-
-// The object-to-world transform of one point, in double precision.
-glm::dvec3 transform_point_exact(const Instance& inst, vec3 p) {
-    const glm::dvec3 q(p);
-    const auto row = [&](vec4 r) { return glm::dot(glm::dvec3(r), q) + double(r.w); };
-    return {row(inst.to_world0), row(inst.to_world1), row(inst.to_world2)};
 }
 
 float embree_tfar(float tmax) {
@@ -72,10 +66,8 @@ void EmbreeAccel::attach_mesh(RTCScene s, uint32_t id, const FlatScene& scene, c
     check("allocating mesh buffers");
     const vec3* p = &scene.positions[m.first_vertex];
     if (to_world) {
-        // In double, rounded once: each world vertex is the float nearest the exact product, and a
-        // vertex shared by two triangles stays one point (watertightness survives the transform).
-        for (uint32_t k = 0; k < m.vertex_count; ++k)
-            v[k] = vec3(transform_point_exact(*to_world, p[k]));
+        // The vertices compute mode's one-level BVH holds too (scene/world_vertex.h).
+        for (uint32_t k = 0; k < m.vertex_count; ++k) v[k] = world_vertex(*to_world, p[k]);
     } else {
         std::memcpy(v, p, sizeof(vec3) * m.vertex_count);
     }
