@@ -1,26 +1,39 @@
-// The compute mode's trace include: ray queries answered by software traversal of the
-// two-level BVH of vulkan_rt/bvh_builder.cpp (node layout: shared/intersect.h). The pipeline
-// mode replaces this file by one that answers the same two calls with traceRayEXT, the way
-// nvpro-samples vk_raytrace swaps traceray_rq.glsl and traceray_rtx.glsl; nothing else in the
-// shaders knows how rays are traced.
+// The compute mode's trace include: ray queries answered by software traversal of the BVH of
+// vulkan_rt/bvh_builder.cpp (node layout: shared/intersect.h). The pipeline mode replaces this
+// file by one that answers the same two calls with traceRayEXT, the way nvpro-samples
+// vk_raytrace swaps traceray_rq.glsl and traceray_rtx.glsl; nothing else in the shaders knows
+// how rays are traced.
 //
 //   bool trace_closest(Ray ray, out TraceHit hit)  nearest hit in (0, ray.tmax)
 //   bool trace_occluded(Ray ray)                   any hit in (0, ray.tmax)
 //
-// Traversal: one loop and one stack for both levels. A popped entry is either a node index or
-// an instance marker (BVH_INSTANCE_FLAG | instance) pushed when the ray met that instance's
-// world-space box. Popping a marker moves the ray into the instance's object space
-// (o' = M^-1 o, d' = M^-1 d, not renormalised, so t is the same parameter in both spaces and
-// the closest distance found so far stays valid) and continues at the mesh's root; once the
-// stack is back at the height it had then, the mesh is done and the ray returns to world
-// space. Each visited node tests both children's boxes; leaves of triangles are intersected at
-// once, inner children are pushed far-first so that the nearer one is visited next. The
-// stack never holds more than depth(top) + depth(bottom) + 1 entries; the builder checks that
-// this fits BVH_STACK_SIZE.
+// The BVH has the shape that the feature mask of the shader asks for (features.glsl,
+// bvh_builder.h). Two levels (FEATURE_INSTANCING; the all-features variant): one loop and one
+// stack for both levels. A popped entry is either a node index or an instance marker
+// (BVH_INSTANCE_FLAG | instance) pushed when the ray met that instance's world-space box.
+// Popping a marker moves the ray into the instance's object space (o' = M^-1 o, d' = M^-1 d,
+// not renormalised, so t is the same parameter in both spaces and the closest distance found so
+// far stays valid) and continues at the mesh's root; once the stack is back at the height it
+// had then, the mesh is done and the ray returns to world space. The stack never holds more
+// than depth(top) + depth(bottom) + 1 entries; the builder checks that this fits
+// BVH_STACK_SIZE.
+//
+// One level (a scene without instancing, specialized to its mask): one tree over every
+// triangle in world space, each naming its instance. The instance markers, the object-space
+// copy of the ray and the return to world space all sit behind `two_level`, which the
+// specialization constant makes a constant false, so the driver removes them: the loop keeps
+// one ray, the stack and the closest hit. This loop sets the register peak of the whole shader
+// (docs/gpu.md: 96 registers on the H200 whatever else the mask removed), so it is where a
+// scene without instancing saves registers.
+//
+// Either way each visited node tests both children's boxes; leaves of triangles are
+// intersected at once, inner children are pushed far-first so that the nearer one is visited
+// next.
 #ifndef TP_SHADERS_TRACE_BVH_GLSL
 #define TP_SHADERS_TRACE_BVH_GLSL
 
 #include "bindings.glsl"
+#include "features.glsl"
 #include "shared/intersect.h"
 #include "shared/path.h"
 #include "shared/surface.h"
@@ -63,32 +76,33 @@ BvhNode bvh_load_node(uint i) {
 }
 
 bool bvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
-    hit.t = ray.tmax;
+    // False for a mask without instancing: one level, no instance state (see the top).
+    bool two_level = feature_on(scene_features, FEATURE_INSTANCING);
+    hit.t = ray.tmax; // the closest hit so far bounds the boxes and triangles still to test
     hit.instance = 0u;
     hit.primitive = 0u;
     hit.bary = vec2(0.0f);
     bool found = false;
-    float tmax = ray.tmax;
 
     vec3 world_inv_dir = ray_inverse_direction(ray.dir);
     vec3 org = ray.origin;
     vec3 inv_dir = world_inv_dir;
     WatertightRay wr = watertight_ray(ray.dir);
-    uint inst = BVH_EMPTY; // the instance whose mesh is being traversed
-    uint inst_sp = 0u;     // stack height when it was entered
+    uint inst = BVH_EMPTY; // two levels: the instance whose mesh is being traversed
+    uint inst_sp = 0u;     // two levels: stack height when it was entered
 
     uint stack[BVH_STACK_SIZE];
     uint sp = 0u;
     stack[sp++] = batch.bvh_top_root;
     for (;;) {
-        if (inst != BVH_EMPTY && sp == inst_sp) { // the mesh is done: back to world space
+        if (two_level && inst != BVH_EMPTY && sp == inst_sp) { // mesh done: back to world space
             inst = BVH_EMPTY;
             org = ray.origin;
             inv_dir = world_inv_dir;
         }
         if (sp == 0u) break;
         uint entry = stack[--sp];
-        if ((entry & BVH_INSTANCE_FLAG) != 0u) {
+        if (two_level && (entry & BVH_INSTANCE_FLAG) != 0u) {
             inst = entry & ~BVH_INSTANCE_FLAG;
             inst_sp = sp;
             Instance I = instances[inst];
@@ -104,9 +118,9 @@ bool bvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
 #endif
         float t0;
         float t1;
-        bool hit0 = n.ref0 != BVH_EMPTY && intersect_aabb(org, inv_dir, n.lo0, n.hi0, tmax, t0);
-        bool hit1 = n.ref1 != BVH_EMPTY && intersect_aabb(org, inv_dir, n.lo1, n.hi1, tmax, t1);
-        if (inst != BVH_EMPTY) { // bottom level: leaves hold triangles
+        bool hit0 = n.ref0 != BVH_EMPTY && intersect_aabb(org, inv_dir, n.lo0, n.hi0, hit.t, t0);
+        bool hit1 = n.ref1 != BVH_EMPTY && intersect_aabb(org, inv_dir, n.lo1, n.hi1, hit.t, t1);
+        if (!two_level || inst != BVH_EMPTY) { // leaves hold triangles: a mesh's or the one level's
             for (uint c = 0u; c < 2u; ++c) {
                 bool leaf_hit = c == 0u ? hit0 && n.count0 > 0u : hit1 && n.count1 > 0u;
                 if (!leaf_hit) continue;
@@ -120,11 +134,11 @@ bool bvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
                     ++g_trace_triangles;
 #endif
                     vec3 tuv;
-                    if (!intersect_triangle(org, wr, a.xyz, b.xyz, c.xyz, tmax, tuv)) continue;
+                    if (!intersect_triangle(org, wr, a.xyz, b.xyz, c.xyz, hit.t, tuv)) continue;
                     found = true;
-                    tmax = tuv.x;
                     hit.t = tuv.x;
-                    hit.instance = inst;
+                    // BvhTriangle words: the primitive in a.w; with one level its instance in b.w.
+                    hit.instance = two_level ? inst : floatBitsToUint(b.w);
                     hit.primitive = floatBitsToUint(a.w);
 #ifdef TP_BUG_SWAP_BARY // planted bug of the debugging tests (tests/gpu/debug_workflow_test.cpp)
                     hit.bary = vec2(tuv.z, tuv.y);

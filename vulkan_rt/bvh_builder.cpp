@@ -1,5 +1,6 @@
 #include "vulkan_rt/bvh_builder.h"
 
+#include "scene/world_vertex.h"
 #include "shared/surface.h"
 #include "util/error.h"
 
@@ -211,15 +212,51 @@ void world_box(const Instance& inst, vec3 lo, vec3 hi, vec3& wlo, vec3& whi) {
     whi += vec3(pad);
 }
 
-} // namespace
+// The tree over every instance's triangles in world space (one level): each leaf item carries
+// its instance, since no instance marker leads to it.
+void build_one_level(const FlatScene& scene, Builder& builder, BvhBuild& out) {
+    size_t count = 0;
+    for (const Instance& inst : scene.instances) count += scene.meshes[inst.mesh].triangle_count;
+    std::vector<BvhTriangle> world;
+    std::vector<RTCBuildPrimitive> prims;
+    world.reserve(count);
+    prims.reserve(count);
+    std::vector<vec3> v;
+    for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+        const Instance& inst = scene.instances[i];
+        const MeshInfo& mesh = scene.meshes[inst.mesh];
+        v.resize(mesh.vertex_count);
+        for (uint32_t k = 0; k < mesh.vertex_count; ++k)
+            v[k] = world_vertex(inst, scene.positions[mesh.first_vertex + k]);
+        for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
+            const uvec3 tri = scene.triangles[mesh.first_triangle + t];
+            BvhTriangle bt{};
+            bt.v0 = v[tri.x];
+            bt.v1 = v[tri.y];
+            bt.v2 = v[tri.z];
+            bt.primitive = t;
+            bt.instance = i;
+            prims.push_back(make_primitive(glm::min(bt.v0, glm::min(bt.v1, bt.v2)),
+                                           glm::max(bt.v0, glm::max(bt.v1, bt.v2)),
+                                           uint32_t(world.size())));
+            world.push_back(bt);
+        }
+    }
+    out.top_root = builder.build(out.nodes, std::move(prims), kMaxTrianglesPerLeaf, kMaxBottomDepth,
+                                 out.bottom_depth, [&](const uint32_t* ids, uint32_t n) {
+                                     const uint32_t first = uint32_t(out.triangles.size());
+                                     for (uint32_t k = 0; k < n; ++k)
+                                         out.triangles.push_back(world[ids[k]]);
+                                     return first;
+                                 });
+    out.one_level = true;
+}
 
-BvhBuild build_bvh(const FlatScene& scene) {
-    BvhBuild out;
-    Builder builder;
+// One tree per mesh in object space and the top tree over the instances' world boxes.
+void build_two_level(const FlatScene& scene, Builder& builder, BvhBuild& out) {
     // Node 0 is the top root; it is filled once the meshes' boxes are known.
     out.nodes.push_back(empty_node());
     out.top_root = 0;
-
     std::vector<vec3> mesh_lo(scene.meshes.size(), vec3(FLOAT_MAX)),
         mesh_hi(scene.meshes.size(), vec3(-FLOAT_MAX));
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
@@ -279,7 +316,17 @@ BvhBuild build_bvh(const FlatScene& scene) {
         else
             out.nodes.push_back(n);
     }
+}
 
+} // namespace
+
+BvhBuild build_bvh(const FlatScene& scene, uint32_t features) {
+    BvhBuild out;
+    Builder builder;
+    if (feature_on(features, FEATURE_INSTANCING))
+        build_two_level(scene, builder, out);
+    else
+        build_one_level(scene, builder, out);
     if (out.top_depth + out.bottom_depth + 2 > BVH_STACK_SIZE)
         input_error("the scene's BVH is too deep for the GPU traversal stack ({} + {} levels)",
                     out.top_depth, out.bottom_depth);

@@ -1,6 +1,5 @@
 #include "vulkan_rt/compute_program.h"
 
-#include "shared/features.h"
 #include "vulkan_rt/pipeline_report.h"
 #include "vulkan_rt/specialization.h"
 #include "vulkan_rt/vk_error.h"
@@ -19,10 +18,6 @@ std::vector<BindingSlot> storage_slots(uint32_t count) {
 }
 
 } // namespace
-
-ComputeProgram::ComputeProgram(const VulkanContext& ctx, const uint32_t* spirv, size_t spirv_bytes,
-                               uint32_t binding_count, uint32_t push_bytes)
-    : ComputeProgram(ctx, spirv, spirv_bytes, binding_count, push_bytes, FEATURES_ALL, false) {}
 
 ComputeProgram::ComputeProgram(const VulkanContext& ctx, const uint32_t* spirv, size_t spirv_bytes,
                                uint32_t binding_count, uint32_t push_bytes, uint32_t features,

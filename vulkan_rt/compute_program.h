@@ -19,10 +19,8 @@ namespace tp {
 
 class ComputeProgram {
   public:
-    ComputeProgram(const VulkanContext& ctx, const uint32_t* spirv, size_t spirv_bytes,
-                   uint32_t binding_count, uint32_t push_bytes);
-    // A render shader: specialized to `features` (shared/features.h) and, when `cached`,
-    // compiled through the pipeline cache on disk.
+    // Specialized to `features` (shared/features.h; a shader without the constant ignores it)
+    // and, when `cached` (the render shaders), compiled through the pipeline cache on disk.
     ComputeProgram(const VulkanContext& ctx, const uint32_t* spirv, size_t spirv_bytes,
                    uint32_t binding_count, uint32_t push_bytes, uint32_t features, bool cached);
     ~ComputeProgram();

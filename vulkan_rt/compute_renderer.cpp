@@ -82,16 +82,18 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 RenderResult render_compute(const VulkanContext& ctx, const FlatScene& scene,
                             const RenderOptions& options) {
+    // The BVH's shape follows the mask the shader is specialized to: one level without
+    // instancing, two with it (bvh_builder.h, trace_bvh.glsl).
+    const uint32_t features = render_feature_mask(scene, options.all_features);
     const auto t_build = std::chrono::steady_clock::now();
-    const BvhBuild bvh = build_bvh(scene);
+    const BvhBuild bvh = build_bvh(scene, features);
     AccelStats accel;
     accel.build_time_s = seconds_since(t_build);
     accel.bytes = bvh.bytes();
+    accel.extra["bvh_levels"] = bvh.one_level ? "1" : "2";
     const SceneBuffers sb =
-        upload_scene(ctx, scene, seeded_params(scene, options.seed), bvh.mesh_roots, 0,
-                     render_feature_mask(scene, options.all_features));
-    ComputeTracer tracer(ctx, bvh, options.debug.active() || debug_spirv_overridden(),
-                         render_feature_mask(scene, options.all_features));
+        upload_scene(ctx, scene, seeded_params(scene, options.seed), bvh.mesh_roots, 0, features);
+    ComputeTracer tracer(ctx, bvh, options.debug.active() || debug_spirv_overridden(), features);
     add_cache_stats(tracer.cache_use(), accel.extra);
     accel.pipeline = tracer.report();
     return render_batches(ctx, scene, options, sb, tracer, accel);

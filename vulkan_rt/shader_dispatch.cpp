@@ -9,7 +9,7 @@ std::vector<std::vector<uint8_t>>
 run_compute_shader(const VulkanContext& ctx, const uint32_t* spirv, size_t spirv_bytes,
                    const std::vector<HostBytes>& inputs, const std::vector<size_t>& output_bytes,
                    const void* push, uint32_t push_bytes, uint32_t groups,
-                   const std::vector<const Buffer*>& device) {
+                   const std::vector<const Buffer*>& device, uint32_t features) {
     const VkBufferUsageFlags usage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
                                      VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
                                      VK_BUFFER_USAGE_TRANSFER_DST_BIT;
@@ -23,7 +23,8 @@ run_compute_shader(const VulkanContext& ctx, const uint32_t* spirv, size_t spirv
         readback.emplace_back(ctx, bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
     }
     ComputeProgram program(ctx, spirv, spirv_bytes,
-                           uint32_t(device.size() + inputs.size() + outputs.size()), push_bytes);
+                           uint32_t(device.size() + inputs.size() + outputs.size()), push_bytes,
+                           features, false);
     std::vector<const Buffer*> bound = device;
     for (const Buffer& b : buffers) bound.push_back(&b);
     for (const Buffer& b : outputs) bound.push_back(&b);

@@ -3,6 +3,7 @@
 // and BRDF sweeps (cli/stress), which `twinpath bench --stress` also runs on the GPU machine.
 #pragma once
 
+#include "shared/features.h"
 #include "vulkan_rt/buffer.h"
 #include "vulkan_rt/context.h"
 
@@ -25,12 +26,13 @@ HostBytes bytes_of(const std::vector<T>& v) {
 
 // Dispatches `groups` workgroups of `spirv` with storage buffers bound in order: first
 // `device` (buffers already on the device), then the inputs (uploaded), then outputs of the
-// given sizes (zero-filled), and returns the outputs.
+// given sizes (zero-filled), and returns the outputs. `features` is the feature mask of a
+// shader that includes the render shaders' features.glsl (with trace_bvh.glsl: the BVH's shape).
 std::vector<std::vector<uint8_t>>
 run_compute_shader(const VulkanContext& ctx, const uint32_t* spirv, size_t spirv_bytes,
                    const std::vector<HostBytes>& inputs, const std::vector<size_t>& output_bytes,
                    const void* push, uint32_t push_bytes, uint32_t groups,
-                   const std::vector<const Buffer*>& device = {});
+                   const std::vector<const Buffer*>& device = {}, uint32_t features = FEATURES_ALL);
 
 // The output as an array of T.
 template <typename T>

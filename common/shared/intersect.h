@@ -6,11 +6,14 @@
 // 2009, sec. 3): a binary BVH whose nodes hold the boxes of *both* children, so one 64-byte
 // load gives everything needed to decide which children to visit. A child is
 //   an inner node      count == 0, ref = node index
-//   a leaf             count >  0, ref = first item; bottom level: first BvhTriangle of
-//                      `count` consecutive ones; top level: the instance index (count == 1)
+//   a leaf             count >  0, ref = first item; bottom level or one level: first
+//                      BvhTriangle of `count` consecutive ones; top level: the instance index
+//                      (count == 1)
 //   absent             count == 0, ref == BVH_EMPTY (only in the root of a one-leaf tree)
-// The top level (over instances, world space) and every mesh's bottom level (object space)
-// live in one node array; MeshInfo::bvh_root is the index of a mesh's root node.
+// Two levels: the top level (over instances, world space) and every mesh's bottom level (object
+// space) live in one node array; MeshInfo::bvh_root is the index of a mesh's root node. One
+// level (a scene without instancing, vulkan_rt/bvh_builder.h): one tree whose leaves hold the
+// triangles of every instance in world space.
 #ifndef TP_SHARED_INTERSECT_H
 #define TP_SHARED_INTERSECT_H
 
@@ -41,15 +44,17 @@ struct BvhNode {
     uint count1;
 };
 
-// A bottom-level leaf item: the triangle's object-space vertices, stored in leaf order so that
-// a leaf is one contiguous read, and its mesh-local index (FlatScene::triangles order).
+// A leaf item: the triangle's vertices, stored in leaf order so that a leaf is one contiguous
+// read, and what a hit on it reports. Two levels: object-space vertices, and the instance is
+// the one whose marker led the traversal there (`instance` unused, 0); one level: world-space
+// vertices and their instance.
 struct BvhTriangle {
     vec3 v0;
-    uint primitive;
+    uint primitive; // mesh-local index (FlatScene::triangles order), as Embree reports it
     vec3 v1;
-    uint pad0;
+    uint instance; // FlatScene instance index (one level)
     vec3 v2;
-    uint pad1;
+    uint pad0;
 };
 
 #ifdef __cplusplus

@@ -47,6 +47,18 @@ const float FLOAT_UNIT_ROUNDOFF = 5.9604645e-8f;
 //     sum_j |M'_kj| |o_j| (products with a zero entry and sums with an exact 0 are exact); back
 //     in world space that is u |p| mix_c, mix_c = sum_k |M_ck| n_k sum_j |M'_kj|
 //     (instance_rounding_mix, surface.h): 1 for an axis-aligned instance, up to 9 rotated.
+//
+// A triangle held in world space (the one-level structures: a mesh that one instance uses in
+// the CPU's Embree scene, every triangle of compute mode's one-level BVH) has the same bound,
+// computed the same way from its object-space vertices and instance, from which both engines
+// rebuild every hit. Its intersector re-tests W_i = fl(M v_i + T) (scene/world_vertex.h) with
+// the world-space origin. Those vertices, and so every point of the triangle, are off the
+// exact placed triangle by at most u |W_ic| <= u (m_c + |T_c|) <= u (2 m_c + |p|): 2 u m_c fits
+// in the doubling of OFFSET_GAMMA_M, and u |p| in u |p| mix_c, which was for the origin's
+// transform that no longer happens (mix_c >= sum_k |M_ck| |M'_kc| >= 1, as M M' = I). The
+// re-test subtracts the origin from vertices within the triangle's extent, 2 m_c, of the
+// point, and rounds at that size, as in object space.
+//
 // An earlier version counted T in m at 40 u: 0.3 units at 1e5 along every axis (38 ulps), which
 // put the floor's new origins inside the sphere resting on it (docs/stress.md, "Open").
 const float OFFSET_GAMMA_M = 40.0f * FLOAT_UNIT_ROUNDOFF;

@@ -23,6 +23,7 @@ std::vector<std::vector<uint8_t>> run_shader(const uint32_t* spirv, size_t spirv
                                              const std::vector<HostBytes>& inputs,
                                              const std::vector<size_t>& output_bytes,
                                              const void* push, uint32_t push_bytes, uint32_t groups,
-                                             const std::vector<const Buffer*>& device = {});
+                                             const std::vector<const Buffer*>& device = {},
+                                             uint32_t features = FEATURES_ALL);
 
 } // namespace tp::test

@@ -4,6 +4,8 @@
 // the BVH builder's invariants and the watertightness of the triangle test.
 #include "scene/flatten.h"
 #include "scene/generators.h"
+#include "scene/world_vertex.h"
+#include "shared/features.h"
 #include "shared/intersect.h"
 #include "shared/surface.h"
 #include "util/error.h"
@@ -172,9 +174,13 @@ bool contains(vec3 lo, vec3 hi, vec3 p) {
 
 struct Walk {
     const BvhBuild& bvh;
-    std::multiset<uint32_t> items;
-    // Visits the subtree of node `n`, checking that every child's box holds its content.
-    void bottom(uint32_t n, const FlatScene& scene, uint32_t mesh) {
+    const FlatScene& scene;
+    std::multiset<std::pair<uint32_t, uint32_t>> items; // (instance word, primitive) of leaves
+    // Visits the triangle tree below node `n`, checking that every child's box holds its
+    // content and that each leaf triangle has the vertices of primitive `primitive` of `mesh`
+    // (two levels, object space), or of its instance's mesh placed by world_vertex (mesh
+    // NO_INDEX: one level).
+    void bottom(uint32_t n, uint32_t mesh) {
         const BvhNode& node = bvh.nodes[n];
         for (int c = 0; c < 2; ++c) {
             const uint32_t ref = c ? node.ref1 : node.ref0, count = c ? node.count1 : node.count0;
@@ -187,21 +193,27 @@ struct Walk {
                     REQUIRE(contains(lo, hi, k ? child.lo1 : child.lo0));
                     REQUIRE(contains(lo, hi, k ? child.hi1 : child.hi0));
                 }
-                bottom(ref, scene, mesh);
+                bottom(ref, mesh);
                 continue;
             }
             REQUIRE(count <= 4);
             for (uint32_t i = ref; i < ref + count; ++i) {
                 const BvhTriangle& t = bvh.triangles[i];
-                const MeshInfo& m = scene.meshes[mesh];
+                const bool world = mesh == NO_INDEX;
+                REQUIRE((world ? t.instance < scene.instances.size() : t.instance == 0));
+                const MeshInfo& m = scene.meshes[world ? scene.instances[t.instance].mesh : mesh];
                 REQUIRE(t.primitive < m.triangle_count);
                 const uvec3 tri = scene.triangles[m.first_triangle + t.primitive];
-                REQUIRE(t.v0 == scene.positions[m.first_vertex + tri.x]);
-                REQUIRE(t.v1 == scene.positions[m.first_vertex + tri.y]);
-                REQUIRE(t.v2 == scene.positions[m.first_vertex + tri.z]);
+                const auto place = [&](uint32_t v) {
+                    const vec3 p = scene.positions[m.first_vertex + v];
+                    return world ? world_vertex(scene.instances[t.instance], p) : p;
+                };
+                REQUIRE(t.v0 == place(tri.x));
+                REQUIRE(t.v1 == place(tri.y));
+                REQUIRE(t.v2 == place(tri.z));
                 REQUIRE(
                     (contains(lo, hi, t.v0) && contains(lo, hi, t.v1) && contains(lo, hi, t.v2)));
-                items.insert(t.primitive);
+                items.insert({t.instance, t.primitive});
             }
         }
     }
@@ -214,11 +226,12 @@ TEST_CASE("BVH holds every triangle once per mesh in boxes that enclose their co
     const BvhBuild bvh = build_bvh(scene);
     REQUIRE(bvh.mesh_roots.size() == scene.meshes.size());
     CHECK(bvh.top_root == 0);
+    CHECK_FALSE(bvh.one_level);
     for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
-        Walk w{bvh, {}};
-        w.bottom(bvh.mesh_roots[m], scene, m);
-        std::multiset<uint32_t> expected;
-        for (uint32_t t = 0; t < scene.meshes[m].triangle_count; ++t) expected.insert(t);
+        Walk w{bvh, scene, {}};
+        w.bottom(bvh.mesh_roots[m], m);
+        std::multiset<std::pair<uint32_t, uint32_t>> expected;
+        for (uint32_t t = 0; t < scene.meshes[m].triangle_count; ++t) expected.insert({0, t});
         CHECK(w.items == expected);
     }
     // Instanced meshes are stored once.
@@ -251,6 +264,25 @@ TEST_CASE("BVH holds every triangle once per mesh in boxes that enclose their co
     CHECK(instances.size() == scene.instances.size());
     CHECK(std::set<uint32_t>(instances.begin(), instances.end()).size() == instances.size());
     CHECK(bvh.top_depth + bvh.bottom_depth + 2 <= BVH_STACK_SIZE);
+}
+
+TEST_CASE("one-level BVH holds every instance's triangles once, in world space", "[gpu]") {
+    // Built for a mask without instancing (what a scene without it renders with); bvh_scene()
+    // has instancing, so this also checks that each instance gets its own copy.
+    const FlatScene scene = bvh_scene();
+    const BvhBuild bvh = build_bvh(scene, FEATURES_ALL & ~FEATURE_INSTANCING);
+    CHECK(bvh.one_level);
+    CHECK(bvh.mesh_roots.empty()); // no mesh trees, no top level
+    CHECK(bvh.top_depth == 0);
+    Walk w{bvh, scene, {}};
+    w.bottom(bvh.top_root, NO_INDEX);
+    std::multiset<std::pair<uint32_t, uint32_t>> expected;
+    for (uint32_t i = 0; i < scene.instances.size(); ++i)
+        for (uint32_t t = 0; t < scene.meshes[scene.instances[i].mesh].triangle_count; ++t)
+            expected.insert({i, t});
+    CHECK(w.items == expected);
+    CHECK(bvh.triangles.size() == expected.size());
+    CHECK(bvh.bottom_depth + 2 <= BVH_STACK_SIZE);
 }
 
 TEST_CASE("watertight triangle test: no ray slips between triangles sharing an edge", "[gpu]") {

@@ -1,8 +1,10 @@
 // Issue 9 on Vulkan (compute mode; lavapipe in CI): the render shader specialized to each
-// bundled scene's features agrees with the all-features shader (`twinpath compare`, alpha
-// 0.01, different seeds); and the pipeline cache on disk: the second render of a scene finds
+// bundled scene's features, with the one-level BVH where the scene has no instancing, agrees
+// with the all-features shader and its two-level BVH (`twinpath compare`, alpha 0.01,
+// different seeds); and the pipeline cache on disk: the second render of a scene finds
 // its pipelines there, and a corrupt or foreign cache file is ignored with a note, never a
 // failure, and replaced.
+#include "shared/features.h"
 #include "support/test_paths.h"
 #include "vulkan_rt/pipeline_cache.h"
 
@@ -48,6 +50,13 @@ TEST_CASE("Vulkan: the specialized shader agrees with the all-features shader on
                 render(scene, dir, "all", cache, common + " --seed 22 --features all", nullptr);
             CHECK(spec["features"]["variant"] == "scene");
             CHECK(all["features"]["mask"] == 1023);
+            // The BVH's shape follows the mask (bvh_builder.h): one level for cornell and
+            // furnace, which have no instancing, so the comparison below checks the one-level
+            // traversal against the two-level one of the all-features shader.
+            const bool instancing =
+                (spec["features"]["mask"].get<uint32_t>() & FEATURE_INSTANCING) != 0;
+            CHECK(spec["extra"]["bvh_levels"] == (instancing ? "2" : "1"));
+            CHECK(all["extra"]["bvh_levels"] == "2");
             CHECK(spec["nan_samples"] == 0);
             CHECK(spec["extra"]["validation_messages"] == "0");
             const ProcessResult cmp = run(
