@@ -208,6 +208,7 @@ int run_render(const RenderArgs& a) {
         info.pixel_x = debug.pixel_x;
         info.pixel_y = debug.pixel_y;
         info.dropped = result.debug.dropped;
+        info.origin = flat.origin;
         write_path_log(a.debug_log, info, result.debug.records);
         if (result.debug.dropped)
             fmt::print(stderr,

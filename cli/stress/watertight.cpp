@@ -111,6 +111,12 @@ RaySet make_rays(const std::string& name, Mesh mesh, uint64_t min_rays) {
     o.name = name;
     s.objects = {o};
     s.settings.width = s.settings.height = 8;
+    // The rays below are aimed in the mesh's own coordinates; flatten() makes the world
+    // camera-relative (FlatScene::origin), so with the eye at the origin the world is the mesh's
+    // space exactly (an identity instance), and a vertex target stays a vertex.
+    s.camera.given = true;
+    s.camera.eye = vec3(0.0f);
+    s.camera.target = vec3(0.0f, 0.0f, -1.0f);
     rs.scene = flatten(s);
 
     std::mt19937 rng(23);

@@ -15,13 +15,21 @@ namespace {
 using nlohmann::json;
 
 // JSON has no NaN or infinity: they are written as the strings "nan", "inf", "-inf".
-json number(float v) {
+json number(double v) {
     if (std::isnan(v)) return "nan";
     if (std::isinf(v)) return v > 0 ? "inf" : "-inf";
-    return double(v);
+    return v;
+}
+json number(float v) {
+    return number(double(v));
 }
 json vec(vec3 v) {
     return json::array({number(v.x), number(v.y), number(v.z)});
+}
+// A camera-relative position in the scene's coordinates (PathLogInfo::origin), in double.
+json point(vec3 v, const glm::dvec3& origin) {
+    const glm::dvec3 p = glm::dvec3(v) + origin;
+    return json::array({number(p.x), number(p.y), number(p.z)});
 }
 json index(uint32_t i) {
     return i == NO_INDEX ? json(-1) : json(i);
@@ -71,18 +79,18 @@ const char* const kRngNames[PATH_LOG_RNG] = {
     "rng.light_slot", "rng.light_coin", "rng.light_u", "rng.light_v", "rng.env_slot",
     "rng.env_coin",   "rng.lobe",       "rng.dir_u",   "rng.dir_v",   "rng.roulette"};
 
-json vertex_json(const PathVertex& v) {
+json vertex_json(const PathVertex& v, const glm::dvec3& origin) {
     json j;
     j["sample"] = v.sample_index;
     j["bounce"] = v.bounce;
     j["event"] = event_name(v.event);
-    j["ray_origin"] = vec(v.ray_origin);
+    j["ray_origin"] = point(v.ray_origin, origin);
     j["ray_dir"] = vec(v.ray_dir);
     j["t"] = number(v.t);
     j["instance"] = index(v.instance);
     j["primitive"] = index(v.primitive);
     j["bary"] = json::array({number(v.bary.x), number(v.bary.y)});
-    j["position"] = vec(v.position);
+    j["position"] = v.event == VERTEX_HIT ? point(v.position, origin) : vec(v.position);
     j["ng"] = vec(v.ng);
     j["ns"] = vec(v.ns);
     j["material"] = index(v.material);
@@ -218,7 +226,7 @@ void write_path_log(const std::string& path, const PathLogInfo& info,
         json vertices = json::array();
         vec3 L(0.0f);
         for (; i < records.size() && records[i].sample_index == s; ++i) {
-            vertices.push_back(vertex_json(records[i]));
+            vertices.push_back(vertex_json(records[i], info.origin));
             L = records[i].radiance;
         }
         paths.push_back({{"sample", s}, {"radiance", vec(L)}, {"vertices", std::move(vertices)}});

@@ -6,6 +6,7 @@
 #include "image/exr_io.h"
 #include "shared/path_log.h"
 
+#include <glm/vec3.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -50,6 +51,9 @@ struct PathLogInfo {
     uint32_t seed = 0, width = 0, height = 0, spp = 0, max_depth = 0, min_depth = 0;
     uint32_t pixel_x = 0, pixel_y = 0;
     uint64_t dropped = 0;
+    // FlatScene::origin: the engines record camera-relative positions; the log shows them in the
+    // scene's coordinates.
+    glm::dvec3 origin{0.0};
 };
 
 // The path log as JSON (docs/debugging.md, "Path log format").

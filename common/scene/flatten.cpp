@@ -11,6 +11,7 @@
 #include <glm/gtc/matrix_inverse.hpp>
 
 #include <cmath>
+#include <limits>
 #include <map>
 
 namespace tp {
@@ -51,6 +52,17 @@ void check_camera(const std::string& path, const CameraDesc& c, const RenderSett
         input_error("{}: camera.eye and camera.target (--eye, --target) coincide", path);
     if (glm::length(glm::cross(glm::normalize(d), c.up)) < 1e-6f)
         input_error("{}: camera.up (--up) is zero or parallel to the viewing direction", path);
+}
+
+// A point of the scene in the camera-relative world (FlatScene::origin), rounded to float once:
+// the difference of two floats is exact in double when their exponents differ by at most
+// 53 - 24 = 29 (and within 2^-53 of itself otherwise), so the result is the float nearest the
+// exact camera-relative point (but for a double-rounding tie).
+vec3 rebased(const glm::dvec3& p, const glm::dvec3& origin) {
+    return vec3(p - origin);
+}
+vec3 rebased(vec3 p, const glm::dvec3& origin) {
+    return rebased(glm::dvec3(p), origin);
 }
 
 // Places the camera on +Z of the bounding sphere's centre, far enough for the sphere to fit
@@ -99,35 +111,41 @@ FlatScene flatten(const Scene& scene) {
         f.meshes.push_back(info);
     }
 
-    // Instances and the world bounds.
-    f.bounds_min = vec3(FLOAT_MAX);
-    f.bounds_max = vec3(-FLOAT_MAX);
+    // The world bounds in the scene's coordinates (double: no rounding at any distance), for
+    // auto-framing; the camera's eye is then the origin of the world both engines render in.
+    if (scene.objects.empty()) input_error("{}: the scene has no objects", scene.path);
+    glm::dvec3 lo(glm::dvec3(std::numeric_limits<double>::max()));
+    glm::dvec3 hi(-lo);
+    for (const Object& o : scene.objects)
+        for (const vec3& p : scene.meshes[o.mesh].positions) {
+            const glm::dvec3 w(glm::dmat4(o.transform) * glm::dvec4(glm::dvec3(p), 1.0));
+            lo = glm::min(lo, w);
+            hi = glm::max(hi, w);
+        }
+    CameraDesc cam = scene.camera;
+    const float aspect = float(scene.settings.width) / float(std::max(scene.settings.height, 1u));
+    if (!cam.given) frame_camera(cam, vec3(lo), vec3(hi), aspect);
+    check_camera(scene.path, cam, scene.settings);
+    f.origin = glm::dvec3(cam.eye);
+    f.bounds_min = rebased(lo, f.origin);
+    f.bounds_max = rebased(hi, f.origin);
+    f.params.camera = camera_make(rebased(cam.eye, f.origin), rebased(cam.target, f.origin), cam.up,
+                                  cam.fov_y_degrees, scene.settings.width, scene.settings.height);
+
+    // Instances: only the translation changes, T - origin.
     for (const Object& o : scene.objects) {
+        glm::mat4 to_world = o.transform;
+        to_world[3] = vec4(rebased(vec3(o.transform[3]), f.origin), 1.0f);
         Instance inst{};
-        store_rows(o.transform, inst.to_world0, inst.to_world1, inst.to_world2);
-        store_rows(glm::affineInverse(o.transform), inst.to_object0, inst.to_object1,
-                   inst.to_object2);
+        store_rows(to_world, inst.to_world0, inst.to_world1, inst.to_world2);
+        store_rows(glm::affineInverse(to_world), inst.to_object0, inst.to_object1, inst.to_object2);
         inst.mesh = mesh_slot.at(o.mesh);
         inst.material = o.material;
         inst.light_offset = NO_INDEX;
-        for (const vec3& p : scene.meshes[o.mesh].positions) {
-            const vec3 w = vec3(o.transform * vec4(p, 1.0f));
-            f.bounds_min = glm::min(f.bounds_min, w);
-            f.bounds_max = glm::max(f.bounds_max, w);
-        }
         f.instanced_triangles += scene.meshes[o.mesh].triangles.size();
         f.instances.push_back(inst);
         f.instance_names.push_back(o.name);
     }
-    if (f.instances.empty()) input_error("{}: the scene has no objects", scene.path);
-
-    // Camera.
-    CameraDesc cam = scene.camera;
-    const float aspect = float(scene.settings.width) / float(std::max(scene.settings.height, 1u));
-    if (!cam.given) frame_camera(cam, f.bounds_min, f.bounds_max, aspect);
-    check_camera(scene.path, cam, scene.settings);
-    f.params.camera = camera_make(cam.eye, cam.target, cam.up, cam.fov_y_degrees,
-                                  scene.settings.width, scene.settings.height);
     f.params.max_depth = scene.settings.max_depth;
     f.params.min_depth = scene.settings.min_depth;
 
@@ -147,7 +165,9 @@ FlatScene flatten(const Scene& scene) {
     const double radius = 0.5 * double(glm::length(f.bounds_max - f.bounds_min));
     const double disk = pi * radius * radius;
     std::vector<double> weights;
-    for (const Light& l : scene.lights) {
+    for (Light l : scene.lights) {
+        // A point light's p0 is a position; a directional light's is a direction.
+        if (l.type == LIGHT_POINT) l.p0 = rebased(l.p0, f.origin);
         f.lights.push_back(l);
         const double lum = double(luminance(l.value));
         weights.push_back(l.type == LIGHT_POINT ? 4.0 * pi * lum : disk * lum);

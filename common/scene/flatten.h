@@ -6,6 +6,7 @@
 
 #include "scene/scene.h"
 
+#include <glm/vec3.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -41,7 +42,17 @@ struct FlatScene {
     std::vector<vec3> texels;
     std::vector<AliasEntry> env_table; // environment-map pixels, when there is a map
 
-    vec3 bounds_min{0.0f}, bounds_max{0.0f}; // world-space bounding box
+    // World space as both engines see it is camera-relative ("large world coordinates"): the
+    // scene's point x is stored as x - origin, computed in double and rounded to float once, with
+    // origin the camera's eye. A float's spacing is proportional to its magnitude, so positions
+    // then keep the precision of their distance to the camera wherever the scene lies: at 1e5
+    // from the scene's own origin, float coordinates are multiples of 2^-7 = 0.0078 and round by
+    // up to a tenth of a pixel in the stress scene (docs/stress.md); camera-relative, by ~1e-7.
+    // Instance translations, the camera, point lights, emissive triangles and the bounds are
+    // rebased; directions (normals, directional lights, the environment) are unchanged. Positions
+    // shown to the user (path logs) add origin back.
+    glm::dvec3 origin{0.0};
+    vec3 bounds_min{0.0f}, bounds_max{0.0f}; // world-space bounding box (camera-relative)
     uint64_t instanced_triangles = 0;        // triangles as rendered (instances counted)
     uint64_t unique_triangles = 0;           // triangles stored
 

@@ -45,6 +45,11 @@ TEST_CASE("a path log records every vertex of the pixel's paths", "[cli][debug]"
         CHECK(v.back()["termination"] != "continue");
         CHECK(p["radiance"] == v.back()["radiance"]);
         CHECK(v[0]["rng.lobe"].get<double>() >= 0.0);
+        // Positions are in the scene's coordinates: the engines' camera-relative world plus
+        // FlatScene::origin. The camera ray leaves cornell's eye (the floats of
+        // [0.278, 0.273, -0.8]), which is 0 in the camera-relative world.
+        const float eye[3] = {0.278f, 0.273f, -0.8f};
+        for (int c = 0; c < 3; ++c) CHECK(v[0]["ray_origin"][c].get<double>() == double(eye[c]));
     }
 }
 

@@ -145,14 +145,16 @@ TEST_CASE("JSON: transforms and instancing and lights and what flatten derives",
     CHECK(f.unique_triangles == 1 + 2);
     CHECK(f.instanced_triangles == 1 + 1 + 2);
     // translate * rotate * scale: vertex (1, 0, 0) -> scale (2, 0, 0) -> rotate 90 degrees
-    // about Z (0, 2, 0) -> translate (1, 4, 3).
+    // about Z (0, 2, 0) -> translate (1, 4, 3); in the camera-relative world, minus the eye.
+    CHECK(f.origin == glm::dvec3(0, 1, 5));
     const tp::vec3 p = tp::instance_point_to_world(f.instances[0], tp::vec3(1, 0, 0));
-    CHECK(glm::length(p - tp::vec3(1, 4, 3)) < 1e-5f);
+    CHECK(glm::length(p - tp::vec3(1, 3, -2)) < 1e-5f);
     const tp::vec3 back = tp::instance_point_to_object(f.instances[0], p);
     CHECK(glm::length(back - tp::vec3(1, 0, 0)) < 1e-5f);
     // Lights: the point and directional lights, the lamp's 2 triangles, the environment.
     REQUIRE(f.lights.size() == 5);
     CHECK(f.lights[0].type == tp::LIGHT_POINT);
+    CHECK(f.lights[0].p0 == tp::vec3(0, 1, -5)); // (0, 2, 0) - eye
     CHECK(f.lights[1].type == tp::LIGHT_DIRECTIONAL);
     CHECK(glm::length(f.lights[1].p0 - tp::vec3(0, 1, 0)) < 1e-6f); // towards the light
     CHECK(f.lights[2].type == tp::LIGHT_TRIANGLE);
