@@ -39,7 +39,7 @@
 #include "shared/surface.h"
 #include "trace_hit.glsl"
 
-// The BVH of vulkan_rt/bvh_builder.cpp, read as vec4s (BvhNode: 4, BvhTriangle: 3 per item) so
+// The BVH of vulkan_rt/bvh_builder.cpp, read as vec4s (BvhNode: 4, BvhTriangle: 4 per item) so
 // that every load is one aligned 16-byte transaction.
 layout(std430, set = 0, binding = BINDING_BVH_NODES) readonly buffer BvhNodeBuffer {
     vec4 bvh_node_words[];
@@ -127,14 +127,16 @@ bool bvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
                 uint first = c == 0u ? n.ref0 : n.ref1;
                 uint end = first + (c == 0u ? n.count0 : n.count1);
                 for (uint i = first; i < end; ++i) {
-                    vec4 a = bvh_triangle_words[3u * i];
-                    vec4 b = bvh_triangle_words[3u * i + 1u];
-                    vec4 c = bvh_triangle_words[3u * i + 2u];
+                    vec4 a = bvh_triangle_words[4u * i];
+                    vec4 b = bvh_triangle_words[4u * i + 1u];
+                    vec4 c = bvh_triangle_words[4u * i + 2u];
+                    vec3 n = bvh_triangle_words[4u * i + 3u].xyz;
 #ifdef TP_TRACE_COUNTS
                     ++g_trace_triangles;
 #endif
                     vec3 tuv;
-                    if (!intersect_triangle(org, wr, a.xyz, b.xyz, c.xyz, hit.t, tuv)) continue;
+                    if (!intersect_triangle_normal(org, wr, a.xyz, b.xyz, c.xyz, n, hit.t, tuv))
+                        continue;
                     found = true;
                     hit.t = tuv.x;
                     // BvhTriangle words: the primitive in a.w; with one level its instance in b.w.

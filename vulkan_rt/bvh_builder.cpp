@@ -66,6 +66,19 @@ RTCBuildPrimitive make_primitive(vec3 lo, vec3 hi, uint32_t id) {
     return p;
 }
 
+// A leaf item with its plane normal, which intersect_triangle_normal takes from the buffer
+// (shared/intersect.h).
+BvhTriangle leaf_triangle(vec3 v0, vec3 v1, vec3 v2, uint32_t primitive, uint32_t instance) {
+    BvhTriangle t{};
+    t.v0 = v0;
+    t.v1 = v1;
+    t.v2 = v2;
+    t.primitive = primitive;
+    t.instance = instance;
+    t.normal = glm::cross(v1 - v0, v2 - v0);
+    return t;
+}
+
 BvhNode empty_node() {
     BvhNode n{};
     n.ref0 = BVH_EMPTY;
@@ -230,12 +243,7 @@ void build_one_level(const FlatScene& scene, Builder& builder, BvhBuild& out) {
             v[k] = world_vertex(inst, scene.positions[mesh.first_vertex + k]);
         for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
             const uvec3 tri = scene.triangles[mesh.first_triangle + t];
-            BvhTriangle bt{};
-            bt.v0 = v[tri.x];
-            bt.v1 = v[tri.y];
-            bt.v2 = v[tri.z];
-            bt.primitive = t;
-            bt.instance = i;
+            const BvhTriangle bt = leaf_triangle(v[tri.x], v[tri.y], v[tri.z], t, i);
             prims.push_back(make_primitive(glm::min(bt.v0, glm::min(bt.v1, bt.v2)),
                                            glm::max(bt.v0, glm::max(bt.v1, bt.v2)),
                                            uint32_t(world.size())));
@@ -274,21 +282,17 @@ void build_two_level(const FlatScene& scene, Builder& builder, BvhBuild& out) {
             mesh_hi[m] = glm::max(mesh_hi[m], hi);
         }
         uint32_t depth = 0;
-        out.mesh_roots.push_back(
-            builder.build(out.nodes, std::move(prims), kMaxTrianglesPerLeaf, kMaxBottomDepth, depth,
-                          [&](const uint32_t* ids, uint32_t n) {
-                              const uint32_t first = uint32_t(out.triangles.size());
-                              for (uint32_t i = 0; i < n; ++i) {
-                                  const uvec3 tri = scene.triangles[mesh.first_triangle + ids[i]];
-                                  BvhTriangle bt{};
-                                  bt.v0 = scene.positions[mesh.first_vertex + tri.x];
-                                  bt.v1 = scene.positions[mesh.first_vertex + tri.y];
-                                  bt.v2 = scene.positions[mesh.first_vertex + tri.z];
-                                  bt.primitive = ids[i];
-                                  out.triangles.push_back(bt);
-                              }
-                              return first;
-                          }));
+        out.mesh_roots.push_back(builder.build(
+            out.nodes, std::move(prims), kMaxTrianglesPerLeaf, kMaxBottomDepth, depth,
+            [&](const uint32_t* ids, uint32_t n) {
+                const uint32_t first = uint32_t(out.triangles.size());
+                for (uint32_t i = 0; i < n; ++i) {
+                    const uvec3 tri = scene.triangles[mesh.first_triangle + ids[i]];
+                    const vec3* p = &scene.positions[mesh.first_vertex];
+                    out.triangles.push_back(leaf_triangle(p[tri.x], p[tri.y], p[tri.z], ids[i], 0));
+                }
+                return first;
+            }));
         out.bottom_depth = std::max(out.bottom_depth, depth);
     }
 

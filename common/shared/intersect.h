@@ -55,11 +55,14 @@ struct BvhTriangle {
     uint instance; // FlatScene instance index (one level)
     vec3 v2;
     uint pad0;
+    vec3 normal; // (v1 - v0) x (v2 - v0): the plane of intersect_triangle_normal's distance
+    uint pad1;
 };
 
 #ifdef __cplusplus
 static_assert(sizeof(BvhNode) == 64 && offsetof(BvhNode, count1) == 60, "BvhNode layout");
-static_assert(sizeof(BvhTriangle) == 48 && offsetof(BvhTriangle, v2) == 32, "BvhTriangle layout");
+static_assert(sizeof(BvhTriangle) == 64 && offsetof(BvhTriangle, normal) == 48,
+              "BvhTriangle layout");
 #endif
 
 // ---- ray / box: the slab test ----------------------------------------------------------------
@@ -107,7 +110,7 @@ inline bool intersect_aabb(vec3 org, vec3 inv_dir, vec3 lo, vec3 hi, float tmax,
 struct WatertightRay {
     uvec3 k;    // kx, ky, kz
     vec3 shear; // Sx = d_kx / d_kz, Sy = d_ky / d_kz, Sz = 1 / d_kz
-    vec3 dir;   // d, for the distance (intersect_triangle)
+    vec3 dir;   // d, for the distance (intersect_triangle_normal)
 };
 
 inline WatertightRay watertight_ray(vec3 dir) {
@@ -128,9 +131,12 @@ inline WatertightRay watertight_ray(vec3 dir) {
 }
 
 // Hit in (0, tmax): tuv = (t, weight of v1, weight of v2), the barycentric convention of
-// surface_point() and of Embree.
-inline bool intersect_triangle(vec3 org, WatertightRay r, vec3 v0, vec3 v1, vec3 v2, float tmax,
-                               OUT(vec3) tuv) {
+// surface_point() and of Embree; n = (v1 - v0) x (v2 - v0), the plane of the distance. The
+// compute traversal reads n from its BvhTriangle: computing it in the leaf loop, where the
+// two-level traversal keeps its world and object rays live, took that shader from 96 to 128
+// registers on the H200 and cost 3-10 % per spp on instanced scenes (docs/gpu.md, "One-level BVH").
+inline bool intersect_triangle_normal(vec3 org, WatertightRay r, vec3 v0, vec3 v1, vec3 v2, vec3 n,
+                                      float tmax, OUT(vec3) tuv) {
     vec3 a = v0 - org;
     vec3 b = v1 - org;
     vec3 c = v2 - org;
@@ -153,12 +159,17 @@ inline bool intersect_triangle(vec3 org, WatertightRay r, vec3 v0, vec3 v1, vec3
     // sphere standing on it; docs/stress.md). The plane's t errs by ~u of the distance and the
     // plane's offset, and is exact for an axis-aligned plane. The edge functions above still
     // decide inside or outside, so the test stays watertight.
-    vec3 n = cross(v1 - v0, v2 - v0);
     float t = dot(a, n) / dot(r.dir, n);
     float inv_det = 1.0f / det;
     if (!(t > 0.0f && t < tmax)) return false;
     tuv = vec3(t, v * inv_det, w * inv_det);
     return true;
+}
+
+// The same test with the plane normal computed here.
+inline bool intersect_triangle(vec3 org, WatertightRay r, vec3 v0, vec3 v1, vec3 v2, float tmax,
+                               OUT(vec3) tuv) {
+    return intersect_triangle_normal(org, r, v0, v1, v2, cross(v1 - v0, v2 - v0), tmax, tuv);
 }
 
 TP_NAMESPACE_END

@@ -211,6 +211,7 @@ struct Walk {
                 REQUIRE(t.v0 == place(tri.x));
                 REQUIRE(t.v1 == place(tri.y));
                 REQUIRE(t.v2 == place(tri.z));
+                REQUIRE(t.normal == glm::cross(t.v1 - t.v0, t.v2 - t.v0));
                 REQUIRE(
                     (contains(lo, hi, t.v0) && contains(lo, hi, t.v1) && contains(lo, hi, t.v2)));
                 items.insert({t.instance, t.primitive});
