@@ -87,8 +87,7 @@ EmbreeAccel::EmbreeAccel(const FlatScene& scene) {
     // A mesh that one instance uses goes into the top-level scene as world-space triangles: a
     // one-level BVH saves the instance transform and a second traversal per ray (BENCHMARKS.md,
     // local-peer). A mesh that several instances share is built once and instanced.
-    std::vector<uint32_t> uses(scene.meshes.size(), 0);
-    for (const Instance& inst : scene.instances) ++uses[inst.mesh];
+    const std::vector<uint32_t> uses = instances_per_mesh(scene);
     meshes_.assign(scene.meshes.size(), nullptr);
     for (uint32_t k = 0; k < scene.meshes.size(); ++k) {
         if (uses[k] < 2) continue;

@@ -46,10 +46,9 @@ std::string SceneFeatures::summary() const {
 
 SceneFeatures analyze_features(const FlatScene& scene) {
     SceneFeatures f;
-    std::vector<uint32_t> mesh_uses(scene.meshes.size(), 0);
+    for (uint32_t uses : instances_per_mesh(scene))
+        if (uses > 1) f.mask |= FEATURE_INSTANCING;
     for (const Instance& inst : scene.instances) {
-        if (inst.mesh < mesh_uses.size() && ++mesh_uses[inst.mesh] == 2)
-            f.mask |= FEATURE_INSTANCING;
         const Material& m = scene.materials[inst.material];
         if (m.kd_texture != NO_TEXTURE) f.mask |= FEATURE_TEXTURES;
         if (m.type == MATERIAL_PHONG && !is_black(m.ks)) f.mask |= FEATURE_PHONG_SPECULAR;

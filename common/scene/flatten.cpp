@@ -242,4 +242,11 @@ FlatScene flatten(const Scene& scene) {
     return f;
 }
 
+std::vector<uint32_t> instances_per_mesh(const FlatScene& scene) {
+    std::vector<uint32_t> uses(scene.meshes.size(), 0);
+    for (const Instance& inst : scene.instances)
+        if (inst.mesh < uses.size()) ++uses[inst.mesh];
+    return uses;
+}
+
 } // namespace tp

@@ -64,4 +64,8 @@ struct FlatScene {
 // Throws InputError for an impossible camera or film.
 FlatScene flatten(const Scene& scene);
 
+// How many instances use each mesh: more than one is instancing (FEATURE_INSTANCING), and the
+// CPU engine instances exactly those meshes (cpu_ref/embree_accel.cpp).
+std::vector<uint32_t> instances_per_mesh(const FlatScene& scene);
+
 } // namespace tp
