@@ -87,7 +87,13 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
             surface_face_viewer(sp, wo);
         PATH_LOG(rec.ng = sp.ng; rec.ns = sp.ns);
 
-        // 3. Next-event estimation.
+        // 3. Next-event estimation: the light sample, its contribution and its shadow ray. The
+        // ray is traced here or, where the trace include sets TRACE_SHADOW_AFTER_SCATTER, after
+        // step 4, and its contribution is added after step 4 either way: before anything else
+        // adds to L, so the sums are the CPU's in the CPU's order.
+        bool shadow_pending = false;
+        Ray shadow;
+        vec3 contrib = vec3(0.0f);
         if (features_sample_lights(scene_features) && !material_is_delta_in(scene_features, mat) &&
             params.light_count > 0u) {
             uint slot = alias_slot_from_bits(rng_bounce_bits(key, bounce, RNG_LIGHT_SLOT),
@@ -111,7 +117,7 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
                 PATH_LOG(rec.light_f = f);
                 if (!is_black(f) && !is_black(ls.radiance)) {
                     float light_pdf = sel_pdf * ls.pdf;
-                    vec3 contrib = T * f * (dot(sp.ns, ls.wi) / light_pdf) * ls.radiance;
+                    contrib = T * f * (dot(sp.ns, ls.wi) / light_pdf) * ls.radiance;
                     if (features_mis(scene_features) && !ls.delta)
                         contrib *= power_heuristic(light_pdf,
                                                    bsdf_pdf_in(scene_features, mat, sp.ns, wo, ls.wi));
@@ -119,12 +125,13 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
                              rec.mis_light = ls.delta ? 1.0f : power_heuristic(light_pdf, rec.light_bsdf_pdf);
                              rec.nee = contrib);
                     ++rays.shadow;
-                    bool occluded = trace_occluded(shadow_ray(sp.p, sp.p_error, sp.ng, ls, lights[li]));
-                    if (!occluded) L += contrib;
-                    PATH_LOG(rec.shadow = occluded ? SHADOW_OCCLUDED : SHADOW_UNOCCLUDED);
+                    shadow = shadow_ray(sp.p, sp.p_error, sp.ng, ls, lights[li]);
+                    shadow_pending = true;
                 }
             }
         }
+        bool occluded = true;
+        if (!TRACE_SHADOW_AFTER_SCATTER && shadow_pending) occluded = trace_occluded(shadow);
 
         // 4. Scattering.
         BsdfSample bs = bsdf_sample_in(
@@ -133,9 +140,16 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
         PATH_LOG(rec.rng[RNG_LOBE] = rng_bounce(key, bounce, RNG_LOBE);
                  rec.rng[RNG_DIR_U] = rng_bounce(key, bounce, RNG_DIR_U);
                  rec.rng[RNG_DIR_V] = rng_bounce(key, bounce, RNG_DIR_V); rec.lobe = bs.lobe;
-                 rec.wi = bs.wi; rec.bsdf_pdf = bs.pdf; rec.bsdf_weight = bs.weight;
-                 rec.radiance = L; rec.throughput = T);
-        if (bs.lobe == LOBE_NONE || !scatter_is_consistent(sp.ng, wo, bs.wi, bs.lobe)) {
+                 rec.wi = bs.wi; rec.bsdf_pdf = bs.pdf; rec.bsdf_weight = bs.weight);
+        bool scatter = bs.lobe != LOBE_NONE && scatter_is_consistent(sp.ng, wo, bs.wi, bs.lobe);
+        Ray next = spawn_ray(sp.p, sp.p_error, sp.ng, bs.wi);
+        if (TRACE_SHADOW_AFTER_SCATTER && shadow_pending) occluded = trace_occluded(shadow);
+        if (shadow_pending) {
+            if (!occluded) L += contrib;
+            PATH_LOG(rec.shadow = occluded ? SHADOW_OCCLUDED : SHADOW_UNOCCLUDED);
+        }
+        PATH_LOG(rec.radiance = L; rec.throughput = T);
+        if (!scatter) {
             PATH_LOG(path_log_emit(rec, bs.lobe == LOBE_NONE ? TERM_NO_SCATTER : TERM_INCONSISTENT));
             break;
         }
@@ -148,7 +162,7 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
             PATH_LOG(rec.throughput = T; path_log_emit(rec, TERM_ROULETTE));
             break;
         }
-        ray = spawn_ray(sp.p, sp.p_error, sp.ng, bs.wi);
+        ray = next;
         ++rays.extension;
         PATH_LOG(rec.throughput = T; path_log_emit(rec, TERM_CONTINUE));
     }

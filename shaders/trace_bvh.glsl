@@ -50,6 +50,11 @@ layout(std430, set = 0, binding = BINDING_BVH_TRIS) readonly buffer BvhTriangleB
 
 const uint BVH_INSTANCE_FLAG = 0x80000000u;
 
+// The traversal is inlined into the path loop, which traces its shadow ray where it has drawn
+// the light sample (integrator.glsl); tracing it after scattering, as the pipeline mode does,
+// made the specialized loops 3-4 % slower per spp here (docs/gpu.md).
+const bool TRACE_SHADOW_AFTER_SCATTER = false;
+
 #ifdef TP_DEBUG_SHADER
 // The traversal cost the cost view shows (debug.glsl): nodes visited and triangles tested by
 // the trace calls since the view cleared them. Only in the debug variant.
