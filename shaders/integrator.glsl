@@ -87,13 +87,12 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
             surface_face_viewer(sp, wo);
         PATH_LOG(rec.ng = sp.ng; rec.ns = sp.ns);
 
-        // 3. Next-event estimation: the light sample, its contribution and its shadow ray. The
-        // ray is traced here or, where the trace include sets TRACE_SHADOW_AFTER_SCATTER, after
-        // step 4, and its contribution is added after step 4 either way: before anything else
-        // adds to L, so the sums are the CPU's in the CPU's order.
+        // 3. Next-event estimation. Where the trace include sets TRACE_SHADOW_AFTER_SCATTER
+        // (pipeline mode) the shadow ray waits for step 4 to be drawn; its contribution still
+        // reaches L before anything else does, so the sums are the CPU's in the CPU's order.
         bool shadow_pending = false;
         Ray shadow;
-        vec3 contrib = vec3(0.0f);
+        vec3 shadow_contrib;
         if (features_sample_lights(scene_features) && !material_is_delta_in(scene_features, mat) &&
             params.light_count > 0u) {
             uint slot = alias_slot_from_bits(rng_bounce_bits(key, bounce, RNG_LIGHT_SLOT),
@@ -117,7 +116,7 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
                 PATH_LOG(rec.light_f = f);
                 if (!is_black(f) && !is_black(ls.radiance)) {
                     float light_pdf = sel_pdf * ls.pdf;
-                    contrib = T * f * (dot(sp.ns, ls.wi) / light_pdf) * ls.radiance;
+                    vec3 contrib = T * f * (dot(sp.ns, ls.wi) / light_pdf) * ls.radiance;
                     if (features_mis(scene_features) && !ls.delta)
                         contrib *= power_heuristic(light_pdf,
                                                    bsdf_pdf_in(scene_features, mat, sp.ns, wo, ls.wi));
@@ -125,13 +124,19 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
                              rec.mis_light = ls.delta ? 1.0f : power_heuristic(light_pdf, rec.light_bsdf_pdf);
                              rec.nee = contrib);
                     ++rays.shadow;
-                    shadow = shadow_ray(sp.p, sp.p_error, sp.ng, ls, lights[li]);
-                    shadow_pending = true;
+                    Ray sr = shadow_ray(sp.p, sp.p_error, sp.ng, ls, lights[li]);
+                    if (TRACE_SHADOW_AFTER_SCATTER) {
+                        shadow_pending = true;
+                        shadow = sr;
+                        shadow_contrib = contrib;
+                    } else {
+                        bool occluded = trace_occluded(sr);
+                        if (!occluded) L += contrib;
+                        PATH_LOG(rec.shadow = occluded ? SHADOW_OCCLUDED : SHADOW_UNOCCLUDED);
+                    }
                 }
             }
         }
-        bool occluded = true;
-        if (!TRACE_SHADOW_AFTER_SCATTER && shadow_pending) occluded = trace_occluded(shadow);
 
         // 4. Scattering.
         BsdfSample bs = bsdf_sample_in(
@@ -140,16 +145,25 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
         PATH_LOG(rec.rng[RNG_LOBE] = rng_bounce(key, bounce, RNG_LOBE);
                  rec.rng[RNG_DIR_U] = rng_bounce(key, bounce, RNG_DIR_U);
                  rec.rng[RNG_DIR_V] = rng_bounce(key, bounce, RNG_DIR_V); rec.lobe = bs.lobe;
-                 rec.wi = bs.wi; rec.bsdf_pdf = bs.pdf; rec.bsdf_weight = bs.weight);
-        bool scatter = bs.lobe != LOBE_NONE && scatter_is_consistent(sp.ng, wo, bs.wi, bs.lobe);
-        Ray next = spawn_ray(sp.p, sp.p_error, sp.ng, bs.wi);
-        if (TRACE_SHADOW_AFTER_SCATTER && shadow_pending) occluded = trace_occluded(shadow);
-        if (shadow_pending) {
-            if (!occluded) L += contrib;
-            PATH_LOG(rec.shadow = occluded ? SHADOW_OCCLUDED : SHADOW_UNOCCLUDED);
+                 rec.wi = bs.wi; rec.bsdf_pdf = bs.pdf; rec.bsdf_weight = bs.weight;
+                 rec.radiance = L; rec.throughput = T);
+        // Pipeline mode: the scattered ray is made before the shadow ray is traced, so that the
+        // surface point is dead across that traceRayEXT.
+        bool scatter = true;
+        Ray next;
+        if (TRACE_SHADOW_AFTER_SCATTER) {
+            scatter = bs.lobe != LOBE_NONE && scatter_is_consistent(sp.ng, wo, bs.wi, bs.lobe);
+            next = spawn_ray(sp.p, sp.p_error, sp.ng, bs.wi);
+            if (shadow_pending) {
+                bool occluded = trace_occluded(shadow);
+                if (!occluded) L += shadow_contrib;
+                PATH_LOG(rec.shadow = occluded ? SHADOW_OCCLUDED : SHADOW_UNOCCLUDED;
+                         rec.radiance = L);
+            }
         }
-        PATH_LOG(rec.radiance = L; rec.throughput = T);
-        if (!scatter) {
+        if (TRACE_SHADOW_AFTER_SCATTER
+                ? !scatter
+                : bs.lobe == LOBE_NONE || !scatter_is_consistent(sp.ng, wo, bs.wi, bs.lobe)) {
             PATH_LOG(path_log_emit(rec, bs.lobe == LOBE_NONE ? TERM_NO_SCATTER : TERM_INCONSISTENT));
             break;
         }
@@ -162,7 +176,7 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
             PATH_LOG(rec.throughput = T; path_log_emit(rec, TERM_ROULETTE));
             break;
         }
-        ray = next;
+        ray = TRACE_SHADOW_AFTER_SCATTER ? next : spawn_ray(sp.p, sp.p_error, sp.ng, bs.wi);
         ++rays.extension;
         PATH_LOG(rec.throughput = T; path_log_emit(rec, TERM_CONTINUE));
     }

@@ -52,7 +52,8 @@ const uint BVH_INSTANCE_FLAG = 0x80000000u;
 
 // The traversal is inlined into the path loop, which traces its shadow ray where it has drawn
 // the light sample (integrator.glsl); tracing it after scattering, as the pipeline mode does,
-// made the specialized loops 3-4 % slower per spp here (docs/gpu.md).
+// made the specialized loops 3-4 % slower per spp here (docs/gpu.md, "Shadow ray after
+// scattering").
 const bool TRACE_SHADOW_AFTER_SCATTER = false;
 
 #ifdef TP_DEBUG_SHADER
