@@ -2,6 +2,7 @@
 
 #include "scene/alias_table.h"
 #include "shared/camera.h"
+#include "shared/lights.h"
 #include "shared/math.h"
 #include "shared/surface.h"
 #include "shared/texture.h"
@@ -186,6 +187,7 @@ FlatScene flatten(const Scene& scene) {
             l.p1 = instance_point_to_world(inst, f.positions[mesh.first_vertex + tri.y]);
             l.p2 = instance_point_to_world(inst, f.positions[mesh.first_vertex + tri.z]);
             l.area = 0.5f * glm::length(glm::cross(l.p1 - l.p0, l.p2 - l.p0));
+            l.normal = triangle_light_normal(l.p0, l.p1, l.p2);
             l.instance = i;
             l.primitive = t;
             l.value = m.ke;

@@ -43,6 +43,8 @@ struct Light {
     uint instance; // triangle: the instance it belongs to
     vec3 value;
     uint primitive; // triangle: its index inside the instance's mesh
+    vec3 normal;    // triangle: triangle_light_normal(p0, p1, p2), computed once at load
+    uint pad0;
 };
 
 // One slot of a Walker/Vose alias table (lights, environment-map pixels).
@@ -114,7 +116,7 @@ struct RenderParams {
 
 #ifdef __cplusplus
 static_assert(sizeof(Material) == 64 && offsetof(Material, type) == 60, "Material layout");
-static_assert(sizeof(Light) == 64 && offsetof(Light, value) == 48, "Light layout");
+static_assert(sizeof(Light) == 80 && offsetof(Light, normal) == 64, "Light layout");
 static_assert(sizeof(AliasEntry) == 12, "AliasEntry layout");
 static_assert(sizeof(MeshInfo) == 32, "MeshInfo layout");
 static_assert(sizeof(Instance) == 112 && offsetof(Instance, mesh) == 96, "Instance layout");

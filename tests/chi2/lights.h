@@ -30,6 +30,7 @@ inline tp::Light test_triangle_light() {
     if (glm::dot(glm::cross(l.p1 - l.p0, l.p2 - l.p0), test_shading_point() - c) < 0.0f)
         std::swap(l.p1, l.p2);
     l.area = 0.5f * glm::length(glm::cross(l.p1 - l.p0, l.p2 - l.p0));
+    l.normal = tp::triangle_light_normal(l.p0, l.p1, l.p2);
     l.value = tp::vec3(1.0f);
     return l;
 }

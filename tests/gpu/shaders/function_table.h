@@ -150,6 +150,8 @@ inline Light fn_light(FnIn x) {
     l.instance = 0u;
     l.value = fn3(x, 9u);
     l.primitive = 0u;
+    l.normal = triangle_light_normal(l.p0, l.p1, l.p2);
+    l.pad0 = 0u;
     return l;
 }
 
@@ -380,7 +382,7 @@ inline FnOut run_function(uint id, FnIn x) {
         fn_put_light(o, sample_directional_light(fn_light(x)));
         break;
     case FN_TRIANGLE_LIGHT_NORMAL:
-        fn_put3(o, 0u, triangle_light_normal(fn_light(x)));
+        fn_put3(o, 0u, triangle_light_normal(fn3(x, 6u), fn3(x, 7u), fn3(x, 8u)));
         break;
     case FN_TRIANGLE_LIGHT_PDF:
         o.f[0].x = triangle_light_pdf(a.x, a.y, a.z);

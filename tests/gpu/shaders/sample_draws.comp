@@ -65,6 +65,8 @@ void main() {
         l.instance = 0u;
         l.value = vec3(1.0f);
         l.primitive = 0u;
+        l.normal = triangle_light_normal(l.p0, l.p1, l.p2);
+        l.pad0 = 0u;
         LightSample ls = sample_triangle_light(l, f3(3u), u.xy);
         if (ls.pdf > 0.0f) r = vec4(ls.wi, 1.0f);
         break;
