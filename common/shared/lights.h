@@ -66,6 +66,19 @@ inline vec3 triangle_light_normal(vec3 p0, vec3 p1, vec3 p2) {
     return normalize(cross(p1 - p0, p2 - p0));
 }
 
+// The normal that sampling and shadow rays use: Light::normal, or, where the includer defines
+// TP_LIGHT_NORMAL_FROM_VERTICES, the same formula on the vertices. The pipeline mode's
+// ray-generation shader does (render_pipeline.rgen): there the 12 more bytes per light read made
+// every bundled scene 1-2 % slower per spp on the H200 (docs/gpu.md, "Stored light normal"),
+// while compute mode was unchanged or faster.
+inline vec3 light_normal(Light l) {
+#ifdef TP_LIGHT_NORMAL_FROM_VERTICES
+    return triangle_light_normal(l.p0, l.p1, l.p2);
+#else
+    return l.normal;
+#endif
+}
+
 // Area measure to solid angle: p_omega = p_A d^2 / cos(theta_l), with p_A = 1 / area.
 inline float triangle_light_pdf(float area, float dist, float cos_light) {
     if (cos_light <= 0.0f || area <= 0.0f) return 0.0f;
@@ -86,7 +99,7 @@ inline LightSample sample_triangle_light(Light l, vec3 p, vec2 u) {
     s.dist = sqrt(dist2);
     s.wi = d / s.dist;
     // Emission leaves the front (counter-clockwise) face only.
-    float cos_light = -dot(l.normal, s.wi);
+    float cos_light = -dot(light_normal(l), s.wi);
     s.pdf = triangle_light_pdf(l.area, s.dist, cos_light);
     s.radiance = s.pdf > 0.0f ? l.value : vec3(0.0f);
     s.point = q;

@@ -86,7 +86,7 @@ inline Ray shadow_ray(vec3 p, vec3 p_error, vec3 ng, LightSample ls, Light l) {
     if (l.type == LIGHT_TRIANGLE)
         target = offset_ray_origin(
             target, point_error_bound(triangle_vertex_magnitude(l.p0, l.p1, l.p2), target),
-            l.normal);
+            light_normal(l));
     vec3 d = target - r.origin;
     float len = length(d);
     r.dir = len > 0.0f ? d / len : ls.wi;
