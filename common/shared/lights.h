@@ -57,20 +57,20 @@ inline LightSample sample_directional_light(Light l) {
     return s;
 }
 
-// The unit normal of a triangle light's front (counter-clockwise) face: Light::normal, which the
-// scene loader fills once per light. Sampling and shadow rays read it instead of forming it at
-// each light sample. On the CPU: -2.0 % of the path loop's instructions (callgrind, cornell
-// 128x128, 2 spp) and 2-4 % of its time (same-run A/B, best of 5, 1 thread: cornell -2.4 %,
-// furnace -1.7 %, cornell_glossy -3.5 %), with bit-identical images.
+// The unit normal of a triangle light's front (counter-clockwise) face; the scene loader stores
+// it in Light::normal.
 inline vec3 triangle_light_normal(vec3 p0, vec3 p1, vec3 p2) {
     return normalize(cross(p1 - p0, p2 - p0));
 }
 
-// The normal that sampling and shadow rays use: Light::normal, or, where the includer defines
-// TP_LIGHT_NORMAL_FROM_VERTICES, the same formula on the vertices. The pipeline mode's
-// ray-generation shader does (render_pipeline.rgen): there the 12 more bytes per light read made
-// every bundled scene 1-2 % slower per spp on the H200 (docs/gpu.md, "Stored light normal"),
-// while compute mode was unchanged or faster.
+// The normal that sampling and shadow rays use: Light::normal, read instead of formed twice per
+// light sample. On the CPU that is -2.0 % of the path loop's instructions (callgrind, cornell
+// 128x128, 2 spp) and 2-4 % of its time (same-run A/B, best of 5, 1 thread: cornell -2.4 %,
+// furnace -1.7 %, cornell_glossy -3.5 %) with bit-identical images; on the H200 compute mode was
+// unchanged or faster. Where the includer defines TP_LIGHT_NORMAL_FROM_VERTICES it is formed from
+// the vertices as before: the pipeline mode's ray-generation shader does (render_pipeline.rgen),
+// because there the 12 more bytes per light read cost 1-2 % per spp on every bundled scene
+// (docs/gpu.md, "Stored light normal").
 inline vec3 light_normal(Light l) {
 #ifdef TP_LIGHT_NORMAL_FROM_VERTICES
     return triangle_light_normal(l.p0, l.p1, l.p2);

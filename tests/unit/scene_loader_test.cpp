@@ -159,6 +159,10 @@ TEST_CASE("JSON: transforms and instancing and lights and what flatten derives",
     CHECK(glm::length(f.lights[1].p0 - tp::vec3(0, 1, 0)) < 1e-6f); // towards the light
     CHECK(f.lights[2].type == tp::LIGHT_TRIANGLE);
     CHECK(f.lights[2].area == Approx(2.0f)); // half of the 2 x 2 quad
+    // Light::normal: the quad's counter-clockwise front faces +Y, as its vertex normals say; the
+    // cross product (0, 4, 0) normalizes exactly.
+    CHECK(f.lights[2].normal == tp::vec3(0, 1, 0));
+    CHECK(f.lights[3].normal == tp::vec3(0, 1, 0));
     CHECK(f.instances[2].light_offset == 2);
     CHECK(f.params.env_light == 4);
     CHECK(f.params.light_count == 5);
