@@ -147,12 +147,11 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
                  rec.rng[RNG_DIR_V] = rng_bounce(key, bounce, RNG_DIR_V); rec.lobe = bs.lobe;
                  rec.wi = bs.wi; rec.bsdf_pdf = bs.pdf; rec.bsdf_weight = bs.weight;
                  rec.radiance = L; rec.throughput = T);
+        bool scatter = bs.lobe != LOBE_NONE && scatter_is_consistent(sp.ng, wo, bs.wi, bs.lobe);
         // Pipeline mode: the scattered ray is made before the shadow ray is traced, so that the
         // surface point is dead across that traceRayEXT.
-        bool scatter = true;
         Ray next;
         if (TRACE_SHADOW_AFTER_SCATTER) {
-            scatter = bs.lobe != LOBE_NONE && scatter_is_consistent(sp.ng, wo, bs.wi, bs.lobe);
             next = spawn_ray(sp.p, sp.p_error, sp.ng, bs.wi);
             if (shadow_pending) {
                 bool occluded = trace_occluded(shadow);
@@ -161,9 +160,7 @@ vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
                          rec.radiance = L);
             }
         }
-        if (TRACE_SHADOW_AFTER_SCATTER
-                ? !scatter
-                : bs.lobe == LOBE_NONE || !scatter_is_consistent(sp.ng, wo, bs.wi, bs.lobe)) {
+        if (!scatter) {
             PATH_LOG(path_log_emit(rec, bs.lobe == LOBE_NONE ? TERM_NO_SCATTER : TERM_INCONSISTENT));
             break;
         }

@@ -75,7 +75,7 @@ BvhTriangle leaf_triangle(vec3 v0, vec3 v1, vec3 v2, uint32_t primitive, uint32_
     t.v2 = v2;
     t.primitive = primitive;
     t.instance = instance;
-    t.normal = glm::cross(v1 - v0, v2 - v0);
+    t.normal = triangle_plane_normal(v0, v1, v2);
     return t;
 }
 

@@ -166,10 +166,16 @@ inline bool intersect_triangle_normal(vec3 org, WatertightRay r, vec3 v0, vec3 v
     return true;
 }
 
+// The n of intersect_triangle_normal; the compute BVH builder stores it per leaf triangle.
+inline vec3 triangle_plane_normal(vec3 v0, vec3 v1, vec3 v2) {
+    return cross(v1 - v0, v2 - v0);
+}
+
 // The same test with the plane normal computed here.
 inline bool intersect_triangle(vec3 org, WatertightRay r, vec3 v0, vec3 v1, vec3 v2, float tmax,
                                OUT(vec3) tuv) {
-    return intersect_triangle_normal(org, r, v0, v1, v2, cross(v1 - v0, v2 - v0), tmax, tuv);
+    return intersect_triangle_normal(org, r, v0, v1, v2, triangle_plane_normal(v0, v1, v2), tmax,
+                                     tuv);
 }
 
 TP_NAMESPACE_END
