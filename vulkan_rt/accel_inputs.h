@@ -1,7 +1,9 @@
 // What pipeline mode's acceleration structures are built from (pure, unit tested): one
 // bottom-level structure (BLAS) per mesh that has triangles, over that mesh's slice of the
 // position and triangle buffers that the shaders read too, and one top-level instance record
-// per FlatScene instance of such a mesh. An instanced mesh is built once.
+// per FlatScene instance of such a mesh. An instanced mesh is built once. A mesh whose
+// triangles dwarf the rest of the scene (exact_triangle_meshes) is built from one box per
+// triangle instead, and its hits come from the intersection shader's exact test.
 #pragma once
 
 #include "scene/flatten.h"
@@ -15,15 +17,30 @@ namespace tp {
 
 struct BlasGeometry {
     uint32_t mesh;
+    bool exact;             // boxes (triangle_boxes) and shaders/exact_triangle.rint
     uint64_t vertex_offset; // bytes into the position buffer (vec3: 12 bytes per vertex)
     uint64_t index_offset;  // bytes into the triangle buffer (uvec3: three uint32 indices)
     uint32_t max_vertex;    // highest mesh-local vertex index a triangle may use
     uint32_t triangle_count;
 };
 
+// Which meshes pipeline mode intersects with shared/intersect.h rather than the driver's
+// triangle test (1: exact), as the compute mode does everywhere. The driver's distance to a
+// triangle errs by ~u times the triangle's size, not the distance (measured on the H200: a
+// floor with vertices at +-1e8 came out in front of a sphere standing on it; docs/stress.md);
+// the offsets of shared/offset.h assume errors of ~u times the distance. A mesh is exact when
+// its longest world-space edge, over its instances, exceeds kExactEdgeRatio times the scene's
+// content scale: the lower median of the instances' world bounding-box diagonals.
+constexpr float kExactEdgeRatio = 1024.0f;
+std::vector<uint8_t> exact_triangle_meshes(const FlatScene& scene);
+
 // In mesh order. The triangles keep their order, so gl_PrimitiveID is the mesh-local triangle
-// index that the shaders and the CPU engine use.
-std::vector<BlasGeometry> blas_geometries(const FlatScene& scene);
+// index that the shaders and the CPU engine use. `exact`: exact_triangle_meshes().
+std::vector<BlasGeometry> blas_geometries(const FlatScene& scene,
+                                          const std::vector<uint8_t>& exact);
+
+// The object-space bounding box of each triangle of an exact geometry, in triangle order.
+std::vector<VkAabbPositionsKHR> triangle_boxes(const FlatScene& scene, const BlasGeometry& g);
 
 struct AccelLimits {
     uint64_t max_instances;  // VkPhysicalDeviceAccelerationStructurePropertiesKHR
@@ -42,13 +59,16 @@ void check_accel_limits(const FlatScene& scene, const AccelLimits& limits);
 // (both are the rows of the 3x4 object-to-world matrix); the custom index is `index`, which
 // the closest-hit shader reports (gl_InstanceCustomIndexEXT) and the shaders use to read
 // Instance[index] (mesh, material, lights); mask 0xFF (every ray sees every instance);
-// hit group 0; no face culling, opaque.
+// hit group RT_HIT_GROUP_EXACT for an exact mesh, else RT_HIT_GROUP_TRIANGLES
+// (shaders/rt_interface.h); no face culling, opaque.
 VkAccelerationStructureInstanceKHR instance_record(const Instance& inst, uint32_t index,
-                                                   uint64_t blas_address);
+                                                   uint64_t blas_address, bool exact = false);
 
 // One record per instance whose mesh has a BLAS, in instance order. mesh_blas_address[m] is the
-// device address of mesh m's BLAS, 0 for a mesh without triangles.
+// device address of mesh m's BLAS, 0 for a mesh without triangles; `exact` as in
+// blas_geometries (empty: none).
 std::vector<VkAccelerationStructureInstanceKHR>
-instance_records(const FlatScene& scene, const std::vector<uint64_t>& mesh_blas_address);
+instance_records(const FlatScene& scene, const std::vector<uint64_t>& mesh_blas_address,
+                 const std::vector<uint8_t>& exact = {});
 
 } // namespace tp

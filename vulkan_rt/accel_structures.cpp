@@ -45,8 +45,8 @@ void record_build_barrier(VkCommandBuffer cmd) {
     VkMemoryBarrier b{};
     b.sType = VK_STRUCTURE_TYPE_MEMORY_BARRIER;
     b.srcAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
-    b.dstAccessMask =
-        VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR | VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
+    b.dstAccessMask = VK_ACCESS_ACCELERATION_STRUCTURE_READ_BIT_KHR |
+                      VK_ACCESS_ACCELERATION_STRUCTURE_WRITE_BIT_KHR;
     vkCmdPipelineBarrier(cmd, VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR,
                          VK_PIPELINE_STAGE_ACCELERATION_STRUCTURE_BUILD_BIT_KHR, 0, 1, &b, 0,
                          nullptr, 0, nullptr);
@@ -126,10 +126,15 @@ AccelStructures::AccelStructures(const VulkanContext& ctx, const RtFunctions& rt
     p2.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2;
     p2.pNext = &props;
     vkGetPhysicalDeviceProperties2(ctx.physical(), &p2);
-    scratch_alignment_ = std::max<VkDeviceSize>(props.minAccelerationStructureScratchOffsetAlignment, 1);
+    scratch_alignment_ =
+        std::max<VkDeviceSize>(props.minAccelerationStructureScratchOffsetAlignment, 1);
     check_accel_limits(scene, {props.maxInstanceCount, props.maxPrimitiveCount});
     build_blas(scene, sb);
     build_tlas(scene);
+}
+
+size_t AccelStructures::exact_count() const {
+    return size_t(std::count(exact_.begin(), exact_.end(), 1));
 }
 
 uint64_t AccelStructures::bytes() const {
@@ -139,7 +144,8 @@ uint64_t AccelStructures::bytes() const {
 }
 
 void AccelStructures::build_blas(const FlatScene& scene, const SceneBuffers& sb) {
-    const std::vector<BlasGeometry> geoms = blas_geometries(scene);
+    exact_ = exact_triangle_meshes(scene);
+    const std::vector<BlasGeometry> geoms = blas_geometries(scene, exact_);
     blas_address_.assign(scene.meshes.size(), 0);
     if (geoms.empty()) return;
     const VkDevice device = ctx_.device();
@@ -147,6 +153,12 @@ void AccelStructures::build_blas(const FlatScene& scene, const SceneBuffers& sb)
         aligned_address(sb.slots[BINDING_POSITIONS], sizeof(float), "vertex buffer");
     const VkDeviceAddress indices =
         aligned_address(sb.slots[BINDING_TRIANGLES], sizeof(uint32_t), "index buffer");
+    // The exact meshes' triangle boxes, one buffer each (8-byte aligned, as AABB data must be).
+    std::vector<Buffer> boxes(geoms.size());
+    Uploader up(ctx_);
+    for (size_t i = 0; i < geoms.size(); ++i)
+        if (geoms[i].exact) boxes[i] = up.add(triangle_boxes(scene, geoms[i]), kAccelInputUsage);
+    up.flush();
 
     // Sizes, the uncompacted structures and one scratch buffer that every build reuses in turn.
     const size_t n = geoms.size();
@@ -158,16 +170,24 @@ void AccelStructures::build_blas(const FlatScene& scene, const SceneBuffers& sb)
         const BlasGeometry& g = geoms[i];
         VkAccelerationStructureGeometryKHR& geom = geometry[i];
         geom.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR;
-        geom.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
         geom.flags = VK_GEOMETRY_OPAQUE_BIT_KHR; // no any-hit shader: every hit counts
-        VkAccelerationStructureGeometryTrianglesDataKHR& t = geom.geometry.triangles;
-        t.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
-        t.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
-        t.vertexData.deviceAddress = positions + g.vertex_offset;
-        t.vertexStride = sizeof(vec3);
-        t.maxVertex = g.max_vertex;
-        t.indexType = VK_INDEX_TYPE_UINT32;
-        t.indexData.deviceAddress = indices + g.index_offset;
+        if (g.exact) {
+            geom.geometryType = VK_GEOMETRY_TYPE_AABBS_KHR;
+            VkAccelerationStructureGeometryAabbsDataKHR& a = geom.geometry.aabbs;
+            a.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_AABBS_DATA_KHR;
+            a.data.deviceAddress = aligned_address(boxes[i], 8, "triangle box buffer");
+            a.stride = sizeof(VkAabbPositionsKHR);
+        } else {
+            geom.geometryType = VK_GEOMETRY_TYPE_TRIANGLES_KHR;
+            VkAccelerationStructureGeometryTrianglesDataKHR& t = geom.geometry.triangles;
+            t.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_TRIANGLES_DATA_KHR;
+            t.vertexFormat = VK_FORMAT_R32G32B32_SFLOAT;
+            t.vertexData.deviceAddress = positions + g.vertex_offset;
+            t.vertexStride = sizeof(vec3);
+            t.maxVertex = g.max_vertex;
+            t.indexType = VK_INDEX_TYPE_UINT32;
+            t.indexData.deviceAddress = indices + g.index_offset;
+        }
 
         VkAccelerationStructureBuildGeometryInfoKHR& bi = info[i];
         bi.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_GEOMETRY_INFO_KHR;
@@ -178,8 +198,9 @@ void AccelStructures::build_blas(const FlatScene& scene, const SceneBuffers& sb)
         bi.pGeometries = &geom;
         VkAccelerationStructureBuildSizesInfoKHR sizes{};
         sizes.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_BUILD_SIZES_INFO_KHR;
-        rt_.vkGetAccelerationStructureBuildSizesKHR(
-            device, VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR, &bi, &g.triangle_count, &sizes);
+        rt_.vkGetAccelerationStructureBuildSizesKHR(device,
+                                                    VK_ACCELERATION_STRUCTURE_BUILD_TYPE_DEVICE_KHR,
+                                                    &bi, &g.triangle_count, &sizes);
         built.emplace_back(ctx_, rt_, VK_ACCELERATION_STRUCTURE_TYPE_BOTTOM_LEVEL_KHR,
                            sizes.accelerationStructureSize);
         bi.dstAccelerationStructure = built.back().handle();
@@ -243,7 +264,7 @@ void AccelStructures::build_blas(const FlatScene& scene, const SceneBuffers& sb)
 
 void AccelStructures::build_tlas(const FlatScene& scene) {
     const std::vector<VkAccelerationStructureInstanceKHR> records =
-        instance_records(scene, blas_address_);
+        instance_records(scene, blas_address_, exact_);
     Uploader up(ctx_);
     const Buffer instances = up.add(records, kAccelInputUsage);
     up.flush();
@@ -252,7 +273,8 @@ void AccelStructures::build_tlas(const FlatScene& scene) {
     geom.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_KHR;
     geom.geometryType = VK_GEOMETRY_TYPE_INSTANCES_KHR;
     geom.flags = VK_GEOMETRY_OPAQUE_BIT_KHR;
-    geom.geometry.instances.sType = VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
+    geom.geometry.instances.sType =
+        VK_STRUCTURE_TYPE_ACCELERATION_STRUCTURE_GEOMETRY_INSTANCES_DATA_KHR;
     geom.geometry.instances.arrayOfPointers = VK_FALSE;
     geom.geometry.instances.data.deviceAddress = aligned_address(instances, 16, "instance buffer");
     VkAccelerationStructureBuildGeometryInfoKHR bi{};

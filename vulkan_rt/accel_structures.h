@@ -53,6 +53,9 @@ class AccelStructures {
     uint64_t bytes() const; // the compacted BLAS and the TLAS
     uint64_t uncompacted_blas_bytes() const { return uncompacted_blas_bytes_; }
     size_t blas_count() const { return blas_.size(); }
+    // Meshes built from triangle boxes (accel_inputs.h, exact_triangle_meshes); with any, the
+    // pipeline needs the procedural hit group (rt_program.h).
+    size_t exact_count() const;
 
   private:
     void build_blas(const FlatScene& scene, const SceneBuffers& sb);
@@ -63,6 +66,7 @@ class AccelStructures {
     VkDeviceSize scratch_alignment_ = 1;
     std::vector<Accel> blas_;            // compacted, one per blas_geometries() entry
     std::vector<uint64_t> blas_address_; // per FlatScene mesh; 0 for a mesh without triangles
+    std::vector<uint8_t> exact_;         // per FlatScene mesh: exact_triangle_meshes()
     uint64_t uncompacted_blas_bytes_ = 0;
     Accel tlas_;
 };

@@ -22,17 +22,17 @@ namespace {
 class PipelineTracer : public Tracer {
   public:
     // `debug`: also build the pipeline with the debug ray-generation shader.
-    PipelineTracer(const VulkanContext& ctx, const RtFunctions& rt, VkAccelerationStructureKHR tlas,
+    PipelineTracer(const VulkanContext& ctx, const RtFunctions& rt, const AccelStructures& as,
                    bool debug, uint32_t features)
-        : program_(ctx, rt, sizeof(BatchParams), nullptr, 0, features) {
-        program_.bind_tlas(tlas);
+        : program_(ctx, rt, sizeof(BatchParams), nullptr, 0, features, as.exact_count() > 0) {
+        program_.bind_tlas(as.tlas());
         if (debug) {
             debug_spirv_ =
                 debug_spirv(tp_spirv_render_pipeline_debug, sizeof(tp_spirv_render_pipeline_debug));
-            debug_program_ =
-                std::make_unique<RtProgram>(ctx, rt, sizeof(BatchParams), debug_spirv_.data(),
-                                            debug_spirv_.size() * 4, features);
-            debug_program_->bind_tlas(tlas);
+            debug_program_ = std::make_unique<RtProgram>(
+                ctx, rt, sizeof(BatchParams), debug_spirv_.data(), debug_spirv_.size() * 4,
+                features, as.exact_count() > 0);
+            debug_program_->bind_tlas(as.tlas());
         }
     }
 
@@ -81,7 +81,8 @@ RenderResult render_pipeline(const VulkanContext& ctx, const FlatScene& scene,
     accel.bytes = as.bytes();
     accel.extra["blas_count"] = std::to_string(as.blas_count());
     accel.extra["blas_bytes_uncompacted"] = std::to_string(as.uncompacted_blas_bytes());
-    PipelineTracer tracer(ctx, rt, as.tlas(), options.debug.active() || debug_spirv_overridden(),
+    accel.extra["exact_meshes"] = std::to_string(as.exact_count());
+    PipelineTracer tracer(ctx, rt, as, options.debug.active() || debug_spirv_overridden(),
                           render_feature_mask(scene, options.all_features));
     add_cache_stats(tracer.cache_use(), accel.extra);
     accel.pipeline = tracer.report();

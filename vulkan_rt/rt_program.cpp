@@ -12,6 +12,7 @@
 
 // Generated from shaders/*.rgen, *.rmiss, *.rchit (shaders/spirv.cmake).
 #include "closest_hit.spv.h"
+#include "exact_triangle.spv.h"
 #include "miss.spv.h"
 #include "render_pipeline.spv.h"
 #include "shadow_miss.spv.h"
@@ -37,18 +38,35 @@ struct Stage {
     size_t bytes;
 };
 
-// Shader stages, and groups, in the order of shaders/rt_interface.h.
+// Shader stages, and groups, in the order of shaders/rt_interface.h: ray generation, the miss
+// shaders, the triangle hit group's closest hit; the procedural hit group adds the intersection
+// shader (kExactStage) and shares the closest hit.
 static_assert(RT_MISS_CLOSEST == 0 && RT_MISS_SHADOW == 1 && RT_MISS_COUNT == 2 &&
-                  RT_HIT_GROUP_COUNT == 1,
+                  RT_HIT_GROUP_TRIANGLES == 0 && RT_HIT_GROUP_EXACT == 1 && RT_HIT_GROUP_COUNT == 2,
               "the stages below follow rt_interface.h");
 const Stage kStages[] = {
     {VK_SHADER_STAGE_RAYGEN_BIT_KHR, tp_spirv_render_pipeline, sizeof(tp_spirv_render_pipeline)},
     {VK_SHADER_STAGE_MISS_BIT_KHR, tp_spirv_miss, sizeof(tp_spirv_miss)},
     {VK_SHADER_STAGE_MISS_BIT_KHR, tp_spirv_shadow_miss, sizeof(tp_spirv_shadow_miss)},
     {VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR, tp_spirv_closest_hit, sizeof(tp_spirv_closest_hit)},
+    {VK_SHADER_STAGE_INTERSECTION_BIT_KHR, tp_spirv_exact_triangle,
+     sizeof(tp_spirv_exact_triangle)},
 };
-constexpr uint32_t kGroupCount = 1 + RT_MISS_COUNT + RT_HIT_GROUP_COUNT;
-static_assert(sizeof(kStages) / sizeof(kStages[0]) == kGroupCount, "one shader per group");
+constexpr uint32_t kClosestHitStage = 3;
+constexpr uint32_t kExactStage = 4;
+
+VkRayTracingShaderGroupCreateInfoKHR shader_group(VkRayTracingShaderGroupTypeKHR type,
+                                                  uint32_t general, uint32_t closest_hit,
+                                                  uint32_t intersection) {
+    VkRayTracingShaderGroupCreateInfoKHR g{};
+    g.sType = VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR;
+    g.type = type;
+    g.generalShader = general;
+    g.closestHitShader = closest_hit;
+    g.anyHitShader = VK_SHADER_UNUSED_KHR;
+    g.intersectionShader = intersection;
+    return g;
+}
 
 VkStridedDeviceAddressRegionKHR region(VkDeviceAddress table, const SbtRegion& r) {
     return {table + r.offset, r.stride, r.size};
@@ -57,9 +75,13 @@ VkStridedDeviceAddressRegionKHR region(VkDeviceAddress table, const SbtRegion& r
 } // namespace
 
 RtProgram::RtProgram(const VulkanContext& ctx, const RtFunctions& rt, uint32_t push_bytes,
-                     const uint32_t* raygen, size_t raygen_bytes, uint32_t features)
+                     const uint32_t* raygen, size_t raygen_bytes, uint32_t features, bool exact)
     : ctx_(ctx), rt_(rt), raygen_spirv_(raygen), raygen_bytes_(raygen_bytes), features_(features),
-      bindings_(ctx, pipeline_slots(), VK_SHADER_STAGE_RAYGEN_BIT_KHR, push_bytes) {
+      hit_groups_(exact ? 2u : 1u),
+      bindings_(ctx, pipeline_slots(),
+                VK_SHADER_STAGE_RAYGEN_BIT_KHR |
+                    (exact ? VK_SHADER_STAGE_INTERSECTION_BIT_KHR : VkShaderStageFlagBits(0)),
+                push_bytes) {
     create_pipeline();
     try {
         create_binding_table();
@@ -91,7 +113,8 @@ void RtProgram::create_pipeline() {
     // there is no per-material hit group to leave out (docs/gpu.md).
     const FeatureSpecialization spec(features_);
     uint64_t shader_hash = fnv1a64(nullptr, 0);
-    for (uint32_t i = 0; i < kGroupCount; ++i) {
+    const uint32_t stage_count = kClosestHitStage + hit_groups_;
+    for (uint32_t i = 0; i < stage_count; ++i) {
         VkShaderModuleCreateInfo mi{};
         mi.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
         const bool own_raygen = i == 0 && raygen_spirv_;
@@ -110,20 +133,17 @@ void RtProgram::create_pipeline() {
         if (kStages[i].stage == VK_SHADER_STAGE_RAYGEN_BIT_KHR) st.pSpecializationInfo = &spec.info;
         stages.push_back(st);
         stage_bits.push_back(st.stage);
-
-        // Ray generation and miss shaders are "general" groups; the closest hit is a
-        // triangle hit group (no any-hit, no intersection shader: built-in triangles).
-        VkRayTracingShaderGroupCreateInfoKHR g{};
-        g.sType = VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR;
-        const bool hit = kStages[i].stage == VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR;
-        g.type = hit ? VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR
-                     : VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR;
-        g.generalShader = hit ? VK_SHADER_UNUSED_KHR : i;
-        g.closestHitShader = hit ? i : VK_SHADER_UNUSED_KHR;
-        g.anyHitShader = VK_SHADER_UNUSED_KHR;
-        g.intersectionShader = VK_SHADER_UNUSED_KHR;
-        groups.push_back(g);
     }
+    // Ray generation and miss shaders are "general" groups; the built-in triangles' hit group
+    // has the closest hit alone (no any-hit: all geometry is opaque).
+    for (uint32_t i = 0; i < kClosestHitStage; ++i)
+        groups.push_back(shader_group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, i,
+                                      VK_SHADER_UNUSED_KHR, VK_SHADER_UNUSED_KHR));
+    groups.push_back(shader_group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR,
+                                  VK_SHADER_UNUSED_KHR, kClosestHitStage, VK_SHADER_UNUSED_KHR));
+    if (hit_groups_ == 2)
+        groups.push_back(shader_group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR,
+                                      VK_SHADER_UNUSED_KHR, kClosestHitStage, kExactStage));
     VkRayTracingPipelineCreateInfoKHR ci{};
     ci.sType = VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR;
     ci.stageCount = uint32_t(stages.size());
@@ -135,7 +155,9 @@ void RtProgram::create_pipeline() {
     ci.layout = bindings_.layout();
     PipelineReporter reporter(ctx_, stage_bits);
     ci.pNext = reporter.chain(nullptr);
-    ci.flags = reporter.flags();
+    // Without exact meshes no instance has boxes: the driver may leave their traversal out.
+    ci.flags = reporter.flags() |
+               (hit_groups_ == 1 ? VK_PIPELINE_CREATE_RAY_TRACING_SKIP_AABBS_BIT_KHR : 0);
     PipelineCache cache(ctx_, shader_hash);
     const auto t0 = std::chrono::steady_clock::now();
     vk_check(rt_.vkCreateRayTracingPipelinesKHR(device, VK_NULL_HANDLE, cache.handle(), 1, &ci,
@@ -163,10 +185,11 @@ void RtProgram::create_binding_table() {
     vkGetPhysicalDeviceProperties2(ctx_.physical(), &p2);
     const SbtProperties sp{props.shaderGroupHandleSize, props.shaderGroupHandleAlignment,
                            props.shaderGroupBaseAlignment, props.maxShaderGroupStride};
-    const SbtLayout layout = sbt_layout(sp, RT_MISS_COUNT, RT_HIT_GROUP_COUNT);
+    const SbtLayout layout = sbt_layout(sp, RT_MISS_COUNT, hit_groups_);
 
-    std::vector<uint8_t> handles(size_t(kGroupCount) * sp.handle_size);
-    vk_check(rt_.vkGetRayTracingShaderGroupHandlesKHR(ctx_.device(), pipeline_, 0, kGroupCount,
+    const uint32_t group_count = 1 + RT_MISS_COUNT + hit_groups_;
+    std::vector<uint8_t> handles(size_t(group_count) * sp.handle_size);
+    vk_check(rt_.vkGetRayTracingShaderGroupHandlesKHR(ctx_.device(), pipeline_, 0, group_count,
                                                       handles.size(), handles.data()),
              "reading shader group handles");
     const std::vector<uint8_t> table = sbt_table(layout, handles);

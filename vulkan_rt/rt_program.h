@@ -1,5 +1,5 @@
 // Pipeline mode's ray-tracing pipeline: the ray-generation shader (shaders/render_pipeline.rgen,
-// the path loop), the two miss shaders and the closest-hit group of shaders/rt_interface.h; its
+// the path loop), the two miss shaders and the hit groups of shaders/rt_interface.h; its
 // shader binding table (sbt_layout.h) in device memory; descriptor set 0 of interface.h with the
 // TLAS in slot 13; and the vkCmdTraceRaysKHR of a batch.
 #pragma once
@@ -17,10 +17,11 @@ namespace tp {
 class RtProgram {
   public:
     // `raygen`/`raygen_bytes`: another ray-generation module in place of render_pipeline.rgen
-    // (its debug variant); null: the normal one.
+    // (its debug variant); null: the normal one. `exact`: the TLAS has instances of exact
+    // meshes (AccelStructures::exact_count), which need the procedural hit group.
     RtProgram(const VulkanContext& ctx, const RtFunctions& rt, uint32_t push_bytes,
               const uint32_t* raygen = nullptr, size_t raygen_bytes = 0,
-              uint32_t features = FEATURES_ALL);
+              uint32_t features = FEATURES_ALL, bool exact = false);
     ~RtProgram();
     RtProgram(const RtProgram&) = delete;
     RtProgram& operator=(const RtProgram&) = delete;
@@ -46,7 +47,8 @@ class RtProgram {
     const RtFunctions& rt_;
     const uint32_t* raygen_spirv_;
     size_t raygen_bytes_;
-    uint32_t features_; // the ray-generation shader's specialization (features.glsl)
+    uint32_t features_;   // the ray-generation shader's specialization (features.glsl)
+    uint32_t hit_groups_; // 1, or 2 with the procedural hit group
     PipelineCacheUse cache_use_;
     PipelineReport report_;
     PipelineBindings bindings_;

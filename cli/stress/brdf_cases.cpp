@@ -13,7 +13,7 @@
 #include "vulkan_rt/shader_dispatch.h"
 
 #include "shared/brdf.h"
-#include "stress_brdf.spv.h"
+#include "stress_brdf_comp.spv.h"
 
 #include <fmt/format.h>
 
@@ -204,9 +204,9 @@ std::vector<CaseResult> brdf_cases_glsl(const VulkanContext& ctx, const Size& s)
     const auto t0 = std::chrono::steady_clock::now();
     const std::vector<BrdfInput> in = inputs(s);
     const uint32_t count = uint32_t(in.size());
-    const auto bytes = run_compute_shader(ctx, tp_spirv_stress_brdf, sizeof(tp_spirv_stress_brdf),
-                                          {bytes_of(in)}, {in.size() * sizeof(BrdfOutput)}, &count,
-                                          sizeof(count), (count + 63) / 64);
+    const auto bytes = run_compute_shader(
+        ctx, tp_spirv_stress_brdf_comp, sizeof(tp_spirv_stress_brdf_comp), {bytes_of(in)},
+        {in.size() * sizeof(BrdfOutput)}, &count, sizeof(count), (count + 63) / 64);
     std::vector<CaseResult> r = check(in, as_vector<BrdfOutput>(bytes[0]), "glsl", s);
     const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     for (CaseResult& c : r) {

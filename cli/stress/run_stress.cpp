@@ -124,13 +124,15 @@ int run_stress(const StressOptions& o) {
         }
         for (const std::string& m : modes) {
             try {
-                if (m == "compute") {
-                    const VulkanContext ctx(o.device, "compute");
-                    add(brdf_cases_glsl(ctx, s));
-                    add(watertight_cases_gpu(ctx, s, o.assets_dir));
+                {
+                    const VulkanContext ctx(o.device, m);
+                    if (m == "compute") {
+                        add(brdf_cases_glsl(ctx, s));
+                        add(watertight_cases_gpu(ctx, s, o.assets_dir));
+                    } else {
+                        add(watertight_cases_pipeline(ctx, s, o.assets_dir));
+                    }
                 }
-                // Pipeline mode's own traversal (the driver's) is exercised by the render cases;
-                // the edge-aimed rays go through the compute traversal only (docs/stress.md).
                 render_cases(vulkan_engine(m, o.device));
             } catch (const RuntimeError& e) {
                 runtime_failure = true;

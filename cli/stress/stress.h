@@ -85,10 +85,13 @@ std::vector<CaseResult> brdf_cases_glsl(const VulkanContext& ctx, const Size& s)
 
 // Rays aimed exactly at the shared edges and vertices of closed meshes: the icosphere, and the
 // bunny when `assets_dir` holds it (skipped otherwise). CPU: Embree; GPU: the compute mode's
-// BVH traversal (shaders/trace_bvh.glsl) on `ctx`.
+// BVH traversal (shaders/trace_bvh.glsl) on `ctx`; pipeline: the driver's traversal of the
+// render's TLAS (shaders/trace_rtx.glsl), on a `ctx` made for pipeline mode.
 std::vector<CaseResult> watertight_cases_cpu(const Size& s, const std::string& assets_dir);
 std::vector<CaseResult> watertight_cases_gpu(const VulkanContext& ctx, const Size& s,
                                              const std::string& assets_dir);
+std::vector<CaseResult> watertight_cases_pipeline(const VulkanContext& ctx, const Size& s,
+                                                  const std::string& assets_dir);
 
 // NaN vertices are rejected at load: `twinpath render` on such an OBJ exits 2 with an error.
 CaseResult nan_vertex_case(const std::string& twinpath_binary, const std::string& temp_dir);

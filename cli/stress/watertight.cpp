@@ -14,12 +14,18 @@
 #include "scene/generators.h"
 #include "scene/load.h"
 #include "shaders/interface.h"
-#include "stress_trace.spv.h"
+#include "stress_trace_comp.spv.h"
+#include "stress_trace_rgen.spv.h"
+#include "vulkan_rt/accel_structures.h"
+#include "vulkan_rt/barriers.h"
 #include "vulkan_rt/bvh_builder.h"
+#include "vulkan_rt/rt_functions.h"
+#include "vulkan_rt/rt_program.h"
 #include "vulkan_rt/scene_buffers.h"
 
 #include <fmt/format.h>
 
+#include <cstring>
 #include <filesystem>
 #include <map>
 #include <random>
@@ -222,6 +228,12 @@ CaseResult verdict(const RaySet& rs, const std::vector<float>& t, const std::vec
     return c;
 }
 
+// One ray's answer from stress_trace.comp or stress_trace.rgen.
+struct StressHit {
+    float t;
+    uint32_t found, budget_held, pad0;
+};
+
 } // namespace
 
 std::vector<CaseResult> watertight_cases_cpu(const Size& s, const std::string& assets_dir) {
@@ -247,10 +259,6 @@ std::vector<CaseResult> watertight_cases_cpu(const Size& s, const std::string& a
 
 std::vector<CaseResult> watertight_cases_gpu(const VulkanContext& ctx, const Size& s,
                                              const std::string& assets_dir) {
-    struct StressHit {
-        float t;
-        uint32_t found, budget_held, pad0;
-    };
     std::vector<CaseResult> out;
     for (const RaySet& rs : ray_sets(s, assets_dir, out)) {
         const auto t0 = std::chrono::steady_clock::now();
@@ -282,10 +290,10 @@ std::vector<CaseResult> watertight_cases_gpu(const VulkanContext& ctx, const Siz
                 bp.sample_count = uint32_t(rays.size());
                 bp.bvh_top_root = bvh.top_root;
                 bp.probe_iterations = LOOP_PROBE_ITERATIONS;
-                const auto res =
-                    run_compute_shader(ctx, tp_spirv_stress_trace, sizeof(tp_spirv_stress_trace),
-                                       {bytes_of(rays)}, {rays.size() * sizeof(StressHit)}, &bp,
-                                       sizeof(bp), uint32_t(rays.size() + 63) / 64, bound);
+                const auto res = run_compute_shader(
+                    ctx, tp_spirv_stress_trace_comp, sizeof(tp_spirv_stress_trace_comp),
+                    {bytes_of(rays)}, {rays.size() * sizeof(StressHit)}, &bp, sizeof(bp),
+                    uint32_t(rays.size() + 63) / 64, bound);
                 const std::vector<StressHit> hits = as_vector<StressHit>(res[0]);
                 std::vector<Ray> again;
                 std::vector<size_t> again_index;
@@ -309,6 +317,62 @@ std::vector<CaseResult> watertight_cases_gpu(const VulkanContext& ctx, const Siz
     }
     for (CaseResult& c : out)
         if (c.skipped) c.backend = "vulkan", c.mode = "compute";
+    return out;
+}
+
+std::vector<CaseResult> watertight_cases_pipeline(const VulkanContext& ctx, const Size& s,
+                                                  const std::string& assets_dir) {
+    const RtFunctions rt(ctx.device());
+    std::vector<CaseResult> out;
+    for (const RaySet& rs : ray_sets(s, assets_dir, out)) {
+        const auto t0 = std::chrono::steady_clock::now();
+        // The render's own acceleration structures and pipeline (pipeline_renderer.cpp), with
+        // stress_trace.rgen as the ray-generation shader.
+        const SceneBuffers sb = upload_scene(ctx, rs.scene, rs.scene.params, {}, kAccelInputUsage);
+        const AccelStructures as(ctx, rt, rs.scene, sb);
+        RtProgram program(ctx, rt, sizeof(BatchParams), tp_spirv_stress_trace_rgen,
+                          sizeof(tp_spirv_stress_trace_rgen), FEATURES_ALL, as.exact_count() > 0);
+        program.bind_tlas(as.tlas());
+        for (uint32_t b = 0; b < sb.slots.size(); ++b) program.bind(b, sb.slots[b]);
+        const Buffer dummy(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
+        program.bind(BINDING_ACCUM, dummy);
+        program.bind(BINDING_COUNTERS, dummy);
+
+        Uploader up(ctx);
+        const Buffer rays = up.add(rs.rays, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
+        up.flush();
+        const size_t hit_bytes = rs.rays.size() * sizeof(StressHit);
+        const Buffer hits(ctx, hit_bytes,
+                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
+                          false);
+        const Buffer readback(ctx, hit_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
+        program.bind(BINDING_DEBUG, rays);
+        program.bind(BINDING_AOV, hits);
+        BatchParams bp{};
+        bp.sample_count = uint32_t(rs.rays.size());
+        // A 2D launch: the width stays far below maxRayDispatchInvocationCount's share of a row.
+        const uint32_t width = 4096;
+        ctx.submit_and_wait([&](VkCommandBuffer cmd) {
+            program.record_trace(cmd, &bp, width, (bp.sample_count + width - 1) / width);
+            record_shader_barrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
+            const VkBufferCopy region{0, 0, hit_bytes};
+            vkCmdCopyBuffer(cmd, hits.handle(), readback.handle(), 1, &region);
+            record_host_read_barrier(cmd);
+        });
+        std::vector<StressHit> h(rs.rays.size());
+        std::memcpy(h.data(), readback.mapped(), hit_bytes);
+        std::vector<float> t(h.size());
+        std::vector<uint8_t> found(h.size());
+        for (size_t i = 0; i < h.size(); ++i) {
+            t[i] = h[i].t;
+            found[i] = uint8_t(h[i].found);
+        }
+        CaseResult c = verdict(rs, t, found, "vulkan", "pipeline", 0);
+        c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        out.push_back(c);
+    }
+    for (CaseResult& c : out)
+        if (c.skipped) c.backend = "vulkan", c.mode = "pipeline";
     return out;
 }
 

@@ -3,7 +3,9 @@
 // records, the bottom-level build inputs and the scene limits, and which mode a device and a
 // --vk-mode request lead to.
 #include "scene/flatten.h"
+#include "scene/generators.h"
 #include "scene/load.h"
+#include "shaders/rt_interface.h"
 #include "shared/surface.h"
 #include "util/error.h"
 #include "vulkan_rt/accel_inputs.h"
@@ -11,7 +13,10 @@
 #include "vulkan_rt/sbt_layout.h"
 
 #include <catch2/catch.hpp>
+#include <glm/gtc/matrix_transform.hpp>
 
+#include <algorithm>
+#include <cmath>
 #include <cstring>
 
 using namespace tp;
@@ -91,12 +96,14 @@ TEST_CASE("SBT regions follow the device's handle size and alignments", "[gpu]")
 }
 
 TEST_CASE("the SBT holds each group's handle at its record", "[gpu]") {
-    for (const SbtProperties& p : {SbtProperties{32, 32, 64, 4096}, SbtProperties{48, 32, 256, 4096},
-                                   SbtProperties{16, 16, 32, 4096}}) {
+    for (const SbtProperties& p :
+         {SbtProperties{32, 32, 64, 4096}, SbtProperties{48, 32, 256, 4096},
+          SbtProperties{16, 16, 32, 4096}}) {
         const SbtLayout l = sbt_layout(p, 2, 1);
         // Handle g is filled with the byte g + 1.
         std::vector<uint8_t> handles;
-        for (uint8_t g = 0; g < 4; ++g) handles.insert(handles.end(), p.handle_size, uint8_t(g + 1));
+        for (uint8_t g = 0; g < 4; ++g)
+            handles.insert(handles.end(), p.handle_size, uint8_t(g + 1));
         const std::vector<uint8_t> table = sbt_table(l, handles);
         REQUIRE(table.size() == l.bytes);
         const uint64_t starts[4] = {l.raygen.offset, l.miss.offset, l.miss.offset + l.miss.stride,
@@ -158,9 +165,13 @@ TEST_CASE("TLAS instance records carry the instance's transform and its index", 
 TEST_CASE("bottom-level inputs are each mesh's slice of the shared buffers", "[gpu]") {
     std::vector<std::string> warnings;
     const FlatScene scene = flatten(load_scene("cornell", warnings));
-    const std::vector<BlasGeometry> geoms = blas_geometries(scene);
+    // The box's walls (5.6 long) and blocks are of one scale: no mesh needs the exact test.
+    const std::vector<uint8_t> exact = exact_triangle_meshes(scene);
+    CHECK(std::count(exact.begin(), exact.end(), 1) == 0);
+    const std::vector<BlasGeometry> geoms = blas_geometries(scene, exact);
     REQUIRE(geoms.size() == scene.meshes.size());
     for (const BlasGeometry& g : geoms) {
+        CHECK(!g.exact);
         const MeshInfo& m = scene.meshes[g.mesh];
         CHECK(g.vertex_offset == uint64_t(m.first_vertex) * 12);
         CHECK(g.index_offset == uint64_t(m.first_triangle) * 12);
@@ -175,12 +186,61 @@ TEST_CASE("bottom-level inputs are each mesh's slice of the shared buffers", "[g
     // Every instance gets a record with its own index, pointing at its mesh's BLAS.
     std::vector<uint64_t> address(scene.meshes.size());
     for (size_t m = 0; m < address.size(); ++m) address[m] = 0x100000 * (m + 1);
-    const auto records = instance_records(scene, address);
+    const auto records = instance_records(scene, address, exact);
     REQUIRE(records.size() == scene.instances.size());
     for (uint32_t i = 0; i < records.size(); ++i) {
         CHECK(records[i].instanceCustomIndex == i);
+        CHECK(records[i].instanceShaderBindingTableRecordOffset == RT_HIT_GROUP_TRIANGLES);
         CHECK(records[i].accelerationStructureReference == address[scene.instances[i].mesh]);
     }
+}
+
+// A floor quad of half-size `half` under a unit box and a unit icosphere (shared/stress: the floor
+// at +-1e8, docs/stress.md); the quad's edges are 2 half sqrt(2) long at the diagonal.
+FlatScene floor_scene(float half, float floor_scale_in_instance = 1.0f) {
+    Scene s;
+    s.materials = {default_material()};
+    s.material_names = {"grey"};
+    s.meshes = {make_quad(), make_box(), make_icosphere(2, false)};
+    const float mesh_half = half / floor_scale_in_instance;
+    for (vec3& p : s.meshes[0].positions) p *= mesh_half;
+    s.objects = {{"floor", 0, 0, glm::scale(glm::mat4(1.0f), vec3(floor_scale_in_instance))},
+                 {"box", 1, 0, glm::mat4(1.0f)},
+                 {"sphere", 2, 0, glm::mat4(1.0f)}};
+    s.camera.given = true;
+    return flatten(s);
+}
+
+TEST_CASE("meshes far larger than the scene's content get the exact triangle test", "[gpu]") {
+    // Content scale: the lower median of the instances' diagonals, the box's and the sphere's
+    // 2 sqrt(3) = 3.46; the threshold is 1024 times that, 3547, for the longest edge.
+    const float content = 2.0f * std::sqrt(3.0f);
+    const float just_below = kExactEdgeRatio * content / (2.0f * std::sqrt(2.0f)) * 0.99f;
+    CHECK(exact_triangle_meshes(floor_scene(1e8f)) == std::vector<uint8_t>{1, 0, 0});
+    CHECK(exact_triangle_meshes(floor_scene(1e4f)) == std::vector<uint8_t>{1, 0, 0});
+    CHECK(exact_triangle_meshes(floor_scene(just_below)) == std::vector<uint8_t>{0, 0, 0});
+    CHECK(exact_triangle_meshes(floor_scene(just_below / 0.99f * 1.01f)) ==
+          std::vector<uint8_t>{1, 0, 0});
+    // The instance's scale counts: the same world floor from a small mesh scaled up.
+    CHECK(exact_triangle_meshes(floor_scene(1e8f, 1e6f)) == std::vector<uint8_t>{1, 0, 0});
+
+    const FlatScene scene = floor_scene(1e8f);
+    const std::vector<uint8_t> exact = exact_triangle_meshes(scene);
+    const std::vector<BlasGeometry> geoms = blas_geometries(scene, exact);
+    REQUIRE(geoms.size() == 3);
+    CHECK((geoms[0].exact && !geoms[1].exact && !geoms[2].exact));
+    // One box per triangle, in triangle order: the quad's triangles (0, 1, 2) and (0, 2, 3).
+    const std::vector<VkAabbPositionsKHR> boxes = triangle_boxes(scene, geoms[0]);
+    REQUIRE(boxes.size() == 2);
+    CHECK((boxes[0].minX == -1e8f && boxes[0].maxX == 1e8f && boxes[0].minZ == -1e8f &&
+           boxes[0].maxZ == 1e8f && boxes[0].minY == 0.0f && boxes[0].maxY == 0.0f));
+    CHECK((boxes[1].minX == -1e8f && boxes[1].maxX == 1e8f));
+    // Its instance selects the procedural hit group; the others the triangle group.
+    const auto records = instance_records(scene, {0xA00, 0xB00, 0xC00}, exact);
+    REQUIRE(records.size() == 3);
+    CHECK(records[0].instanceShaderBindingTableRecordOffset == RT_HIT_GROUP_EXACT);
+    CHECK(records[1].instanceShaderBindingTableRecordOffset == RT_HIT_GROUP_TRIANGLES);
+    CHECK(records[2].instanceShaderBindingTableRecordOffset == RT_HIT_GROUP_TRIANGLES);
 }
 
 TEST_CASE("meshes without triangles get no BLAS and their instances no record", "[gpu]") {
@@ -191,10 +251,11 @@ TEST_CASE("meshes without triangles get no BLAS and their instances no record", 
     scene.meshes[2] = {2, 4, 1, 3, 0, 0, 0, 0};
     scene.instances.resize(4);
     for (uint32_t i = 0; i < 4; ++i) scene.instances[i].mesh = i % 3; // 0, 1, 2, 0
-    const std::vector<BlasGeometry> geoms = blas_geometries(scene);
+    const std::vector<BlasGeometry> geoms = blas_geometries(scene, {});
     REQUIRE(geoms.size() == 2);
     CHECK((geoms[0].mesh == 0 && geoms[1].mesh == 2));
-    CHECK((geoms[1].vertex_offset == 48 && geoms[1].index_offset == 24 && geoms[1].max_vertex == 2));
+    CHECK(
+        (geoms[1].vertex_offset == 48 && geoms[1].index_offset == 24 && geoms[1].max_vertex == 2));
     const auto records = instance_records(scene, {0xA00, 0, 0xC00});
     REQUIRE(records.size() == 3);
     CHECK((records[0].instanceCustomIndex == 0 && records[1].instanceCustomIndex == 2 &&
