@@ -155,9 +155,10 @@ void RtProgram::create_pipeline() {
     ci.layout = bindings_.layout();
     PipelineReporter reporter(ctx_, stage_bits);
     ci.pNext = reporter.chain(nullptr);
-    // Without exact meshes no instance has boxes: the driver may leave their traversal out.
-    ci.flags = reporter.flags() |
-               (hit_groups_ == 1 ? VK_PIPELINE_CREATE_RAY_TRACING_SKIP_AABBS_BIT_KHR : 0);
+    // (VK_PIPELINE_CREATE_RAY_TRACING_SKIP_AABBS_BIT_KHR for pipelines without the procedural
+    // group would need the rayTraversalPrimitiveCulling feature, and measured no faster on the
+    // H200: docs/gpu.md, "Exact meshes".)
+    ci.flags = reporter.flags();
     PipelineCache cache(ctx_, shader_hash);
     const auto t0 = std::chrono::steady_clock::now();
     vk_check(rt_.vkCreateRayTracingPipelinesKHR(device, VK_NULL_HANDLE, cache.handle(), 1, &ci,
