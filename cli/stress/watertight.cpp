@@ -27,6 +27,7 @@
 
 #include <cstring>
 #include <filesystem>
+#include <functional>
 #include <map>
 #include <random>
 
@@ -195,8 +196,19 @@ std::vector<RaySet> ray_sets(const Size& s, const std::string& assets_dir,
     return sets;
 }
 
-CaseResult verdict(const RaySet& rs, const std::vector<float>& t, const std::vector<uint8_t>& found,
-                   const std::string& backend, const std::string& mode, uint64_t truncated) {
+// What one engine answered for a ray set: the closest hit's t and whether there was one, per
+// ray, and how many traversals the loop budget cut (compute mode on lavapipe).
+struct Traced {
+    std::vector<float> t;
+    std::vector<uint8_t> found;
+    uint64_t truncated = 0;
+};
+
+CaseResult verdict(const RaySet& rs, const Traced& traced, const std::string& backend,
+                   const std::string& mode) {
+    const std::vector<float>& t = traced.t;
+    const std::vector<uint8_t>& found = traced.found;
+    const uint64_t truncated = traced.truncated;
     CaseResult c;
     c.group = "watertight";
     c.name = fmt::format("{}: {} shared edges (2 points each), {} vertices", rs.mesh, rs.edges,
@@ -234,34 +246,40 @@ struct StressHit {
     uint32_t found, budget_held, pad0;
 };
 
-} // namespace
-
-std::vector<CaseResult> watertight_cases_cpu(const Size& s, const std::string& assets_dir) {
+// The cases of one engine: every ray set through `trace`, timed.
+std::vector<CaseResult> run_cases(const Size& s, const std::string& assets_dir,
+                                  const std::string& backend, const std::string& mode,
+                                  const std::function<Traced(const RaySet&)>& trace) {
     std::vector<CaseResult> out;
     for (const RaySet& rs : ray_sets(s, assets_dir, out)) {
         const auto t0 = std::chrono::steady_clock::now();
-        const EmbreeAccel embree(rs.scene);
-        std::vector<float> t(rs.rays.size());
-        std::vector<uint8_t> found(rs.rays.size());
-        for (size_t i = 0; i < rs.rays.size(); ++i) {
-            const Hit h = embree.intersect(rs.rays[i]);
-            found[i] = h.found;
-            t[i] = h.t;
-        }
-        CaseResult c = verdict(rs, t, found, "cpu", "embree", 0);
+        CaseResult c = verdict(rs, trace(rs), backend, mode);
         c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
         out.push_back(c);
     }
     for (CaseResult& c : out)
-        if (c.skipped) c.backend = "cpu", c.mode = "embree";
+        if (c.skipped) c.backend = backend, c.mode = mode;
     return out;
+}
+
+} // namespace
+
+std::vector<CaseResult> watertight_cases_cpu(const Size& s, const std::string& assets_dir) {
+    return run_cases(s, assets_dir, "cpu", "embree", [](const RaySet& rs) {
+        const EmbreeAccel embree(rs.scene);
+        Traced out{std::vector<float>(rs.rays.size()), std::vector<uint8_t>(rs.rays.size())};
+        for (size_t i = 0; i < rs.rays.size(); ++i) {
+            const Hit h = embree.intersect(rs.rays[i]);
+            out.found[i] = h.found;
+            out.t[i] = h.t;
+        }
+        return out;
+    });
 }
 
 std::vector<CaseResult> watertight_cases_gpu(const VulkanContext& ctx, const Size& s,
                                              const std::string& assets_dir) {
-    std::vector<CaseResult> out;
-    for (const RaySet& rs : ray_sets(s, assets_dir, out)) {
-        const auto t0 = std::chrono::steady_clock::now();
+    return run_cases(s, assets_dir, "vulkan", "compute", [&ctx](const RaySet& rs) {
         const BvhBuild bvh = build_bvh(rs.scene);
         const SceneBuffers sb = upload_scene(ctx, rs.scene, rs.scene.params, bvh.mesh_roots, 0);
         const BvhBuffers bb = upload_bvh(ctx, bvh);
@@ -275,9 +293,7 @@ std::vector<CaseResult> watertight_cases_gpu(const VulkanContext& ctx, const Siz
         // Whatever slots the render interface adds after these (debug buffers) get the
         // placeholder too: the rays and hits follow at BINDING_COUNT.
         while (bound.size() < BINDING_COUNT) bound.push_back(&dummy);
-        std::vector<float> t(rs.rays.size());
-        std::vector<uint8_t> found(rs.rays.size());
-        uint64_t truncated = 0;
+        Traced out{std::vector<float>(rs.rays.size()), std::vector<uint8_t>(rs.rays.size())};
         // Chunks of 2^18 rays: a few MB per dispatch, and a cut traversal is retried alone.
         const size_t chunk = size_t(1) << 18;
         for (size_t begin = 0; begin < rs.rays.size(); begin += chunk) {
@@ -303,29 +319,22 @@ std::vector<CaseResult> watertight_cases_gpu(const VulkanContext& ctx, const Siz
                         again_index.push_back(index[i]);
                         continue;
                     }
-                    t[index[i]] = hits[i].t;
-                    found[index[i]] = uint8_t(hits[i].found);
+                    out.t[index[i]] = hits[i].t;
+                    out.found[index[i]] = uint8_t(hits[i].found);
                 }
                 rays.swap(again);
                 index.swap(again_index);
             }
-            truncated += rays.size();
+            out.truncated += rays.size();
         }
-        CaseResult c = verdict(rs, t, found, "vulkan", "compute", truncated);
-        c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        out.push_back(c);
-    }
-    for (CaseResult& c : out)
-        if (c.skipped) c.backend = "vulkan", c.mode = "compute";
-    return out;
+        return out;
+    });
 }
 
 std::vector<CaseResult> watertight_cases_pipeline(const VulkanContext& ctx, const Size& s,
                                                   const std::string& assets_dir) {
     const RtFunctions rt(ctx.device());
-    std::vector<CaseResult> out;
-    for (const RaySet& rs : ray_sets(s, assets_dir, out)) {
-        const auto t0 = std::chrono::steady_clock::now();
+    return run_cases(s, assets_dir, "vulkan", "pipeline", [&ctx, &rt](const RaySet& rs) {
         // The render's own acceleration structures and pipeline (pipeline_renderer.cpp), with
         // stress_trace.rgen as the ray-generation shader.
         const SceneBuffers sb = upload_scene(ctx, rs.scene, rs.scene.params, {}, kAccelInputUsage);
@@ -350,7 +359,7 @@ std::vector<CaseResult> watertight_cases_pipeline(const VulkanContext& ctx, cons
         program.bind(BINDING_AOV, hits);
         BatchParams bp{};
         bp.sample_count = uint32_t(rs.rays.size());
-        // A 2D launch: the width stays far below maxRayDispatchInvocationCount's share of a row.
+        // A 2D launch of rows of 4096 rays (4.4e6 rays: 1070 rows).
         const uint32_t width = 4096;
         ctx.submit_and_wait([&](VkCommandBuffer cmd) {
             program.record_trace(cmd, &bp, width, (bp.sample_count + width - 1) / width);
@@ -361,19 +370,13 @@ std::vector<CaseResult> watertight_cases_pipeline(const VulkanContext& ctx, cons
         });
         std::vector<StressHit> h(rs.rays.size());
         std::memcpy(h.data(), readback.mapped(), hit_bytes);
-        std::vector<float> t(h.size());
-        std::vector<uint8_t> found(h.size());
+        Traced out{std::vector<float>(h.size()), std::vector<uint8_t>(h.size())};
         for (size_t i = 0; i < h.size(); ++i) {
-            t[i] = h[i].t;
-            found[i] = uint8_t(h[i].found);
+            out.t[i] = h[i].t;
+            out.found[i] = uint8_t(h[i].found);
         }
-        CaseResult c = verdict(rs, t, found, "vulkan", "pipeline", 0);
-        c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-        out.push_back(c);
-    }
-    for (CaseResult& c : out)
-        if (c.skipped) c.backend = "vulkan", c.mode = "pipeline";
-    return out;
+        return out;
+    });
 }
 
 } // namespace tp::stress
