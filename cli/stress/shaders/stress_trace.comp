@@ -17,7 +17,9 @@ struct StressHit {
 };
 
 layout(local_size_x = 64) in;
-layout(scalar, set = 0, binding = BINDING_COUNT) readonly buffer RayBuffer { Ray rays[]; };
+layout(scalar, set = 0, binding = BINDING_COUNT) readonly buffer RayBuffer {
+    Ray rays[];
+};
 layout(scalar, set = 0, binding = BINDING_COUNT + 1) writeonly buffer HitBuffer {
     StressHit hits[];
 };
