@@ -24,33 +24,37 @@ float instance_stretch(const Instance& t) {
 } // namespace
 
 std::vector<uint8_t> exact_triangle_meshes(const FlatScene& scene) {
-    std::vector<uint8_t> exact(scene.meshes.size(), 0);
-    std::vector<float> edge(scene.meshes.size(), 0.0f);
-    std::vector<vec3> lo(scene.meshes.size(), vec3(FLOAT_MAX)),
-        hi(scene.meshes.size(), vec3(-FLOAT_MAX));
-    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+    const size_t n = scene.meshes.size();
+    std::vector<float> edge(n, 0.0f), diagonal_of(n, 0.0f);
+    for (size_t m = 0; m < n; ++m) {
         const MeshInfo& mesh = scene.meshes[m];
+        float edge2 = 0.0f;
         for (uint32_t t = 0; t < mesh.triangle_count; ++t)
             for (int k = 0; k < 3; ++k) {
-                const vec3 a = mesh_vertex(scene, mesh, t, k);
-                const vec3 b = mesh_vertex(scene, mesh, t, (k + 1) % 3);
-                edge[m] = std::max(edge[m], glm::length(b - a));
-                lo[m] = glm::min(lo[m], a);
-                hi[m] = glm::max(hi[m], a);
+                const vec3 e =
+                    mesh_vertex(scene, mesh, t, (k + 1) % 3) - mesh_vertex(scene, mesh, t, k);
+                edge2 = std::max(edge2, glm::dot(e, e));
             }
+        edge[m] = std::sqrt(edge2);
+        vec3 lo(FLOAT_MAX), hi(-FLOAT_MAX);
+        for (uint32_t v = 0; v < mesh.vertex_count; ++v) {
+            lo = glm::min(lo, scene.positions[mesh.first_vertex + v]);
+            hi = glm::max(hi, scene.positions[mesh.first_vertex + v]);
+        }
+        if (mesh.vertex_count > 0) diagonal_of[m] = glm::length(hi - lo);
     }
-    std::vector<float> diagonal, world_edge(scene.meshes.size(), 0.0f);
+    std::vector<float> diagonal, world_edge(n, 0.0f);
     for (const Instance& inst : scene.instances) {
         if (scene.meshes[inst.mesh].triangle_count == 0) continue;
         const float stretch = instance_stretch(inst);
-        diagonal.push_back(glm::length(hi[inst.mesh] - lo[inst.mesh]) * stretch);
+        diagonal.push_back(diagonal_of[inst.mesh] * stretch);
         world_edge[inst.mesh] = std::max(world_edge[inst.mesh], edge[inst.mesh] * stretch);
     }
+    std::vector<uint8_t> exact(n, 0);
     if (diagonal.empty()) return exact;
     const auto median = diagonal.begin() + (diagonal.size() - 1) / 2;
     std::nth_element(diagonal.begin(), median, diagonal.end());
-    for (size_t m = 0; m < scene.meshes.size(); ++m)
-        exact[m] = world_edge[m] > kExactEdgeRatio * *median;
+    for (size_t m = 0; m < n; ++m) exact[m] = world_edge[m] > kExactEdgeRatio * *median;
     return exact;
 }
 
@@ -60,8 +64,7 @@ std::vector<BlasGeometry> blas_geometries(const FlatScene& scene,
     for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
         const MeshInfo& mesh = scene.meshes[m];
         if (mesh.triangle_count == 0) continue;
-        out.push_back({m, m < exact.size() && exact[m] != 0,
-                       uint64_t(mesh.first_vertex) * sizeof(vec3),
+        out.push_back({m, exact[m] != 0, uint64_t(mesh.first_vertex) * sizeof(vec3),
                        uint64_t(mesh.first_triangle) * sizeof(uvec3), mesh.vertex_count - 1,
                        mesh.triangle_count});
     }
@@ -115,9 +118,7 @@ instance_records(const FlatScene& scene, const std::vector<uint64_t>& mesh_blas_
     for (uint32_t i = 0; i < scene.instances.size(); ++i) {
         const uint32_t m = scene.instances[i].mesh;
         const uint64_t blas = mesh_blas_address[m];
-        if (blas != 0)
-            out.push_back(
-                instance_record(scene.instances[i], i, blas, m < exact.size() && exact[m]));
+        if (blas != 0) out.push_back(instance_record(scene.instances[i], i, blas, exact[m] != 0));
     }
     return out;
 }

@@ -35,7 +35,8 @@ constexpr float kExactEdgeRatio = 1024.0f;
 std::vector<uint8_t> exact_triangle_meshes(const FlatScene& scene);
 
 // In mesh order. The triangles keep their order, so gl_PrimitiveID is the mesh-local triangle
-// index that the shaders and the CPU engine use. `exact`: exact_triangle_meshes().
+// index that the shaders and the CPU engine use. `exact`: exact_triangle_meshes(), one entry
+// per mesh.
 std::vector<BlasGeometry> blas_geometries(const FlatScene& scene,
                                           const std::vector<uint8_t>& exact);
 
@@ -62,13 +63,13 @@ void check_accel_limits(const FlatScene& scene, const AccelLimits& limits);
 // hit group RT_HIT_GROUP_EXACT for an exact mesh, else RT_HIT_GROUP_TRIANGLES
 // (shaders/rt_interface.h); no face culling, opaque.
 VkAccelerationStructureInstanceKHR instance_record(const Instance& inst, uint32_t index,
-                                                   uint64_t blas_address, bool exact = false);
+                                                   uint64_t blas_address, bool exact);
 
 // One record per instance whose mesh has a BLAS, in instance order. mesh_blas_address[m] is the
 // device address of mesh m's BLAS, 0 for a mesh without triangles; `exact` as in
-// blas_geometries (empty: none).
+// blas_geometries.
 std::vector<VkAccelerationStructureInstanceKHR>
 instance_records(const FlatScene& scene, const std::vector<uint64_t>& mesh_blas_address,
-                 const std::vector<uint8_t>& exact = {});
+                 const std::vector<uint8_t>& exact);
 
 } // namespace tp

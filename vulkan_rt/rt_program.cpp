@@ -109,7 +109,7 @@ void RtProgram::create_pipeline() {
         }
     } guard{device, modules};
     // The path loop lives in the ray-generation shader: it alone is specialized to the scene's
-    // features. One closest-hit group serves every material (it only reports the hit), so
+    // features. One closest-hit shader serves every material (it only reports the hit), so
     // there is no per-material hit group to leave out (docs/gpu.md).
     const FeatureSpecialization spec(features_);
     uint64_t shader_hash = fnv1a64(nullptr, 0);

@@ -128,7 +128,7 @@ TEST_CASE("TLAS instance records carry the instance's transform and its index", 
     inst.to_world2 = vec4(1.5f, 0.0f, 3.0f, 11.0f);
     const uint64_t blas = 0x0000123456789a00ull;
     for (uint32_t index : {0u, 5u, 4095u, uint32_t(kMaxCustomIndex)}) {
-        const VkAccelerationStructureInstanceKHR r = instance_record(inst, index, blas);
+        const VkAccelerationStructureInstanceKHR r = instance_record(inst, index, blas, false);
         const vec4 rows[3] = {inst.to_world0, inst.to_world1, inst.to_world2};
         for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 4; ++j) CHECK(r.transform.matrix[i][j] == rows[i][j]);
@@ -153,7 +153,7 @@ TEST_CASE("TLAS instance records carry the instance's transform and its index", 
     }
 
     // The record's matrix maps points as the shaders' instance transform does.
-    const VkAccelerationStructureInstanceKHR r = instance_record(inst, 0, blas);
+    const VkAccelerationStructureInstanceKHR r = instance_record(inst, 0, blas, false);
     const vec3 p(0.3f, -2.0f, 5.0f);
     const vec3 expected = instance_point_to_world(inst, p);
     for (int i = 0; i < 3; ++i) {
@@ -251,12 +251,12 @@ TEST_CASE("meshes without triangles get no BLAS and their instances no record", 
     scene.meshes[2] = {2, 4, 1, 3, 0, 0, 0, 0};
     scene.instances.resize(4);
     for (uint32_t i = 0; i < 4; ++i) scene.instances[i].mesh = i % 3; // 0, 1, 2, 0
-    const std::vector<BlasGeometry> geoms = blas_geometries(scene, {});
+    const std::vector<BlasGeometry> geoms = blas_geometries(scene, {0, 0, 0});
     REQUIRE(geoms.size() == 2);
     CHECK((geoms[0].mesh == 0 && geoms[1].mesh == 2));
     CHECK(
         (geoms[1].vertex_offset == 48 && geoms[1].index_offset == 24 && geoms[1].max_vertex == 2));
-    const auto records = instance_records(scene, {0xA00, 0, 0xC00});
+    const auto records = instance_records(scene, {0xA00, 0, 0xC00}, {0, 0, 0});
     REQUIRE(records.size() == 3);
     CHECK((records[0].instanceCustomIndex == 0 && records[1].instanceCustomIndex == 2 &&
            records[2].instanceCustomIndex == 3));
