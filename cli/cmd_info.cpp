@@ -57,6 +57,7 @@ int scene_info(const std::string& path, bool json_out) {
     j["textures"] = f.textures.size();
     j["triangles"] = f.instanced_triangles;
     j["unique_triangles"] = f.unique_triangles;
+    j["dielectric_interfaces"] = f.dielectric_interfaces;
     j["lights"] = f.lights.size();
     j["features"] = features.names();
     j["feature_mask"] = features.mask;
@@ -69,6 +70,9 @@ int scene_info(const std::string& path, bool json_out) {
                scene.path, f.instances.size(), f.meshes.size(), f.instanced_triangles,
                f.unique_triangles, f.materials.size(), f.textures.size(), f.lights.size(),
                features.summary());
+    if (f.dielectric_interfaces > 0)
+        fmt::print("  {} coincident dielectric faces merged into interfaces\n",
+                   f.dielectric_interfaces);
     return 0;
 }
 

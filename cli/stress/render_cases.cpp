@@ -296,24 +296,28 @@ std::vector<CaseResult> dielectric_cases(const Engine& e, const Size& s) {
                                        glm::scale(I4, vec3(0.5f)));
                             expect_uniform(c, render(e, flat(sc), 32), 1.0, 1e-3);
                         }));
-    // Touching: two glass cubes share the plane x = 0 (coincident faces, opposite normals).
-    // Under the renderer's model a zero-thickness air film separates them; a path that crosses
-    // the shared plane must meet both faces (leave one, enter the other), or the weights no
-    // longer pair up and the furnace gains or loses energy.
-    out.push_back(
-        timed(make_case("dielectric", "touching cubes (coincident faces)", e,
-                        "every pixel 1 within 1e-3"),
-              [&](CaseResult& c) {
-                  Scene sc = glass_furnace(s.image / 2, s.furnace_spp);
-                  sc.camera.eye = vec3(1.5f, 2.0f, 4.0f);
-                  const uint32_t box = add_mesh(sc, make_box());
-                  const uint32_t m = add_material(sc, "glass", glass(1.5f));
-                  add_object(sc, "left", box, m,
-                             glm::scale(glm::translate(I4, vec3(-0.5f, 0.0f, 0.0f)), vec3(0.5f)));
-                  add_object(sc, "right", box, m,
-                             glm::scale(glm::translate(I4, vec3(0.5f, 0.0f, 0.0f)), vec3(0.5f)));
-                  expect_uniform(c, render(e, flat(sc), 33), 1.0, 1e-3);
-              }));
+    // Touching: two cubes share the plane x = 0 (coincident faces, opposite normals), once both
+    // of glass and once glass against water. flatten() merges the shared faces into one
+    // interface of relative index n_left / n_right (scene/dielectric_interfaces.h), so a path
+    // crosses the plane in one event and its entries and exits pair up; a path that met only
+    // one of the two faces would gain or lose n^2 and break the furnace.
+    for (const float right_ior : {1.5f, 1.33f})
+        out.push_back(timed(
+            make_case("dielectric",
+                      fmt::format("touching cubes IOR 1.5 and {} (coincident faces)", right_ior), e,
+                      "every pixel 1 within 1e-3"),
+            [&, right_ior](CaseResult& c) {
+                Scene sc = glass_furnace(s.image / 2, s.furnace_spp);
+                sc.camera.eye = vec3(1.5f, 2.0f, 4.0f);
+                const uint32_t box = add_mesh(sc, make_box());
+                const auto cube = [&](const char* name, float ior, float x) {
+                    add_object(sc, name, box, add_material(sc, name, glass(ior)),
+                               glm::scale(glm::translate(I4, vec3(x, 0.0f, 0.0f)), vec3(0.5f)));
+                };
+                cube("left", 1.5f, -0.5f);
+                cube("right", right_ior, 0.5f);
+                expect_uniform(c, render(e, flat(sc), 33), 1.0, 1e-3);
+            }));
     return out;
 }
 

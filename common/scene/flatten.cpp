@@ -1,6 +1,7 @@
 #include "scene/flatten.h"
 
 #include "scene/alias_table.h"
+#include "scene/dielectric_interfaces.h"
 #include "shared/camera.h"
 #include "shared/lights.h"
 #include "shared/math.h"
@@ -78,8 +79,11 @@ void frame_camera(CameraDesc& c, vec3 lo, vec3 hi, float aspect) {
 
 } // namespace
 
-FlatScene flatten(const Scene& scene) {
+FlatScene flatten(const Scene& input) {
+    const std::optional<DielectricInterfaces> merged = merge_dielectric_interfaces(input);
+    const Scene& scene = merged ? merged->scene : input;
     FlatScene f;
+    f.dielectric_interfaces = merged ? merged->faces : 0;
     f.name = scene.path;
     f.spp = scene.settings.spp;
     f.materials = scene.materials;

@@ -73,14 +73,17 @@ Mesh make_quad() {
 Mesh make_box() {
     Mesh m;
     m.name = "box";
-    // Each face: a corner and two edge directions whose cross product points outwards.
+    // Each face: a corner and two edge directions whose cross product points outwards. Every
+    // face starts at its (-, -) corner and is split along the diagonal to (+, +), so a copy
+    // moved by the box's width along an axis touches it with the same two triangles, reversed:
+    // touching dielectric boxes are then merged into one interface (dielectric_interfaces.h).
     const std::array<std::array<vec3, 3>, 6> faces = {{
-        {{{1, -1, 1}, {0, 0, -2}, {0, 2, 0}}},  // +X
+        {{{1, -1, -1}, {0, 2, 0}, {0, 0, 2}}},  // +X
         {{{-1, -1, -1}, {0, 0, 2}, {0, 2, 0}}}, // -X
-        {{{-1, 1, 1}, {2, 0, 0}, {0, 0, -2}}},  // +Y
+        {{{-1, 1, -1}, {0, 0, 2}, {2, 0, 0}}},  // +Y
         {{{-1, -1, -1}, {2, 0, 0}, {0, 0, 2}}}, // -Y
         {{{-1, -1, 1}, {2, 0, 0}, {0, 2, 0}}},  // +Z
-        {{{1, -1, -1}, {-2, 0, 0}, {0, 2, 0}}}, // -Z
+        {{{-1, -1, -1}, {0, 2, 0}, {2, 0, 0}}}, // -Z
     }};
     for (const auto& face : faces) {
         const uint32_t base = uint32_t(m.positions.size());

@@ -1,0 +1,185 @@
+#include "scene/dielectric_interfaces.h"
+
+#include <array>
+#include <cstring>
+#include <fmt/format.h>
+#include <glm/mat4x4.hpp>
+#include <map>
+#include <tuple>
+#include <unordered_map>
+
+namespace tp {
+
+namespace {
+
+struct TriangleRef {
+    uint32_t object, triangle;
+};
+
+// A triangle's world-space corners as bits, rotated to start at the lexicographically smallest
+// corner: the two windings of one vertex set get two keys, and a reversed partner is found by
+// looking up the key of (a, c, b).
+using Key = std::array<uint32_t, 9>;
+
+struct KeyHash {
+    size_t operator()(const Key& k) const {
+        uint64_t h = 1469598103934665603ull; // FNV-1a over the nine words
+        for (uint32_t w : k) h = (h ^ w) * 1099511628211ull;
+        return size_t(h);
+    }
+};
+
+bool before(vec3 a, vec3 b) {
+    return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
+}
+
+Key key_of(vec3 a, vec3 b, vec3 c) {
+    const std::array<vec3, 3> v{a, b, c};
+    const int first =
+        before(v[1], v[0]) ? (before(v[2], v[1]) ? 2 : 1) : (before(v[2], v[0]) ? 2 : 0);
+    Key k;
+    for (int i = 0; i < 3; ++i) {
+        const vec3 p = v[(first + i) % 3] + vec3(0.0f); // -0 + 0 = +0: one key per point
+        std::memcpy(&k[3 * i], &p, sizeof(vec3));
+    }
+    return k;
+}
+
+// M p + T in double, rounded once: equal for both objects exactly where the two meshes were
+// built to share the vertex (translated, scaled or rotated copies with exact products).
+vec3 world_point(const glm::dmat4& m, vec3 p) {
+    return vec3(m * glm::dvec4(glm::dvec3(p), 1.0));
+}
+
+bool merges(const Material& m) {
+    return m.type == MATERIAL_DIELECTRIC && m.ke == vec3(0.0f);
+}
+
+// The triangles of `m` that `take` selects, with only the vertices they use.
+Mesh sub_mesh(const Mesh& m, const std::vector<bool>& take, std::string name) {
+    Mesh out;
+    out.name = std::move(name);
+    std::vector<uint32_t> slot(m.positions.size(), NO_INDEX);
+    const auto vertex = [&](uint32_t v) {
+        if (slot[v] == NO_INDEX) {
+            slot[v] = uint32_t(out.positions.size());
+            out.positions.push_back(m.positions[v]);
+            if (!m.normals.empty()) out.normals.push_back(m.normals[v]);
+            if (!m.uvs.empty()) out.uvs.push_back(m.uvs[v]);
+        }
+        return slot[v];
+    };
+    for (size_t t = 0; t < m.triangles.size(); ++t)
+        if (take[t]) {
+            const uvec3 tri = m.triangles[t];
+            out.triangles.push_back(uvec3(vertex(tri.x), vertex(tri.y), vertex(tri.z)));
+        }
+    return out;
+}
+
+} // namespace
+
+std::optional<DielectricInterfaces> merge_dielectric_interfaces(const Scene& scene) {
+    std::vector<uint32_t> candidates;
+    for (uint32_t o = 0; o < scene.objects.size(); ++o)
+        if (merges(scene.materials[scene.objects[o].material])) candidates.push_back(o);
+    if (candidates.size() < 2) return std::nullopt;
+
+    const auto corners = [&](TriangleRef r) {
+        const Object& o = scene.objects[r.object];
+        const Mesh& m = scene.meshes[o.mesh];
+        const glm::dmat4 to_world(o.transform);
+        const uvec3 t = m.triangles[r.triangle];
+        return std::array<vec3, 3>{world_point(to_world, m.positions[t.x]),
+                                   world_point(to_world, m.positions[t.y]),
+                                   world_point(to_world, m.positions[t.z])};
+    };
+    std::unordered_map<Key, std::vector<TriangleRef>, KeyHash> by_key;
+    for (uint32_t o : candidates)
+        for (uint32_t t = 0; t < scene.meshes[scene.objects[o].mesh].triangles.size(); ++t) {
+            const auto c = corners({o, t});
+            by_key[key_of(c[0], c[1], c[2])].push_back({o, t});
+        }
+
+    // removed[o][t]: triangle t leaves object o (to an interface, or dropped as the copy).
+    std::vector<std::vector<bool>> removed(scene.objects.size());
+    for (uint32_t o : candidates)
+        removed[o].assign(scene.meshes[scene.objects[o].mesh].triangles.size(), false);
+    // (A, B) -> the triangles of A that become the interface between A and B (A < B).
+    std::map<std::pair<uint32_t, uint32_t>, std::vector<bool>> interfaces;
+    uint64_t faces = 0;
+    for (uint32_t o : candidates)
+        for (uint32_t t = 0; t < removed[o].size(); ++t) {
+            if (removed[o][t]) continue;
+            const auto c = corners({o, t});
+            const auto it = by_key.find(key_of(c[0], c[2], c[1]));
+            if (it == by_key.end()) continue;
+            for (const TriangleRef r : it->second) {
+                if (r.object == o || removed[r.object][r.triangle]) continue;
+                const TriangleRef a = r.object < o ? r : TriangleRef{o, t};
+                const TriangleRef b = r.object < o ? TriangleRef{o, t} : r;
+                std::vector<bool>& mine = interfaces[{a.object, b.object}];
+                mine.resize(removed[a.object].size(), false);
+                mine[a.triangle] = true;
+                removed[a.object][a.triangle] = removed[b.object][b.triangle] = true;
+                ++faces;
+                break;
+            }
+        }
+    if (faces == 0) return std::nullopt;
+
+    DielectricInterfaces out;
+    out.faces = faces;
+    Scene& s = out.scene;
+    s = scene;
+    // One material per ordered pair of materials: the medium of A (inside, against the normal)
+    // over the medium of B; a ray crossing it is filtered by both objects' tints, as it was by
+    // the two surfaces it replaces.
+    std::map<std::pair<uint32_t, uint32_t>, uint32_t> interface_material;
+    for (size_t k = s.material_names.size(); k < s.materials.size(); ++k)
+        s.material_names.push_back(fmt::format("material {}", k));
+    for (const auto& [pair, take] : interfaces) {
+        const Object a = s.objects[pair.first], b = s.objects[pair.second];
+        const auto key = std::make_pair(a.material, b.material);
+        if (!interface_material.count(key)) {
+            Material m = s.materials[a.material];
+            const Material& mb = s.materials[b.material];
+            m.ior = m.ior / mb.ior;
+            m.tf = m.tf * mb.tf;
+            interface_material[key] = uint32_t(s.materials.size());
+            s.materials.push_back(m);
+            s.material_names.push_back(
+                fmt::format("{}|{}", s.material_names[a.material], s.material_names[b.material]));
+        }
+        Object io = a;
+        io.name = fmt::format("{}|{}", a.name, b.name);
+        io.material = interface_material[key];
+        io.mesh = uint32_t(s.meshes.size());
+        s.meshes.push_back(sub_mesh(scene.meshes[a.mesh], take, io.name));
+        s.objects.push_back(io);
+    }
+    // What stays of each object; an object all of whose faces left is gone.
+    std::vector<bool> gone(s.objects.size(), false);
+    for (uint32_t o : candidates) {
+        std::vector<bool> keep(removed[o].size());
+        bool any_removed = false, any_kept = false;
+        for (size_t t = 0; t < keep.size(); ++t) {
+            keep[t] = !removed[o][t];
+            any_removed |= removed[o][t];
+            any_kept |= keep[t];
+        }
+        if (!any_removed) continue;
+        gone[o] = !any_kept;
+        if (gone[o]) continue;
+        const Mesh& m = scene.meshes[scene.objects[o].mesh];
+        s.objects[o].mesh = uint32_t(s.meshes.size());
+        s.meshes.push_back(sub_mesh(m, keep, m.name));
+    }
+    std::vector<Object> objects;
+    for (uint32_t o = 0; o < s.objects.size(); ++o)
+        if (!gone[o]) objects.push_back(s.objects[o]);
+    s.objects = std::move(objects);
+    return out;
+}
+
+} // namespace tp
