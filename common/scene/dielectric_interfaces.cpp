@@ -1,12 +1,12 @@
 #include "scene/dielectric_interfaces.h"
 
+#include <algorithm>
 #include <array>
 #include <cstring>
 #include <fmt/format.h>
 #include <glm/mat4x4.hpp>
 #include <map>
 #include <tuple>
-#include <unordered_map>
 
 namespace tp {
 
@@ -21,11 +21,12 @@ struct TriangleRef {
 // looking up the key of (a, c, b).
 using Key = std::array<uint32_t, 9>;
 
-struct KeyHash {
-    size_t operator()(const Key& k) const {
-        uint64_t h = 1469598103934665603ull; // FNV-1a over the nine words
-        for (uint32_t w : k) h = (h ^ w) * 1099511628211ull;
-        return size_t(h);
+struct Keyed {
+    Key key;
+    TriangleRef ref;
+    bool operator<(const Keyed& o) const {
+        return std::tie(key, ref.object, ref.triangle) <
+               std::tie(o.key, o.ref.object, o.ref.triangle);
     }
 };
 
@@ -94,12 +95,14 @@ std::optional<DielectricInterfaces> merge_dielectric_interfaces(const Scene& sce
                                    world_point(to_world, m.positions[t.y]),
                                    world_point(to_world, m.positions[t.z])};
     };
-    std::unordered_map<Key, std::vector<TriangleRef>, KeyHash> by_key;
+    // Sorted by key (44 bytes a triangle): each triangle's reversed partners are one range.
+    std::vector<Keyed> by_key;
     for (uint32_t o : candidates)
         for (uint32_t t = 0; t < scene.meshes[scene.objects[o].mesh].triangles.size(); ++t) {
             const auto c = corners({o, t});
-            by_key[key_of(c[0], c[1], c[2])].push_back({o, t});
+            by_key.push_back({key_of(c[0], c[1], c[2]), {o, t}});
         }
+    std::sort(by_key.begin(), by_key.end());
 
     // removed[o][t]: triangle t leaves object o (to an interface, or dropped as the copy).
     std::vector<std::vector<bool>> removed(scene.objects.size());
@@ -112,9 +115,10 @@ std::optional<DielectricInterfaces> merge_dielectric_interfaces(const Scene& sce
         for (uint32_t t = 0; t < removed[o].size(); ++t) {
             if (removed[o][t]) continue;
             const auto c = corners({o, t});
-            const auto it = by_key.find(key_of(c[0], c[2], c[1]));
-            if (it == by_key.end()) continue;
-            for (const TriangleRef r : it->second) {
+            const Keyed reversed{key_of(c[0], c[2], c[1]), {0, 0}};
+            for (auto it = std::lower_bound(by_key.begin(), by_key.end(), reversed);
+                 it != by_key.end() && it->key == reversed.key; ++it) {
+                const TriangleRef r = it->ref;
                 if (r.object == o || removed[r.object][r.triangle]) continue;
                 const TriangleRef a = r.object < o ? r : TriangleRef{o, t};
                 const TriangleRef b = r.object < o ? TriangleRef{o, t} : r;
