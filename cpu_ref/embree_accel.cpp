@@ -3,6 +3,7 @@
 #include "scene/world_vertex.h"
 #include "util/error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <cstring>
 #include <limits>
@@ -48,34 +49,60 @@ void EmbreeAccel::check(const char* what) const {
 
 RTCScene EmbreeAccel::new_scene() const {
     RTCScene s = rtcNewScene(device_);
-    // ROBUST: no traversal shortcuts that trade watertightness for speed.
-    rtcSetSceneFlags(s, RTC_SCENE_FLAG_ROBUST);
+    // Not RTC_SCENE_FLAG_ROBUST: the grown triangles make Embree's fast test conservative and the
+    // filter exact (exact_triangles.h), where the robust mode alone leaks at vertices and takes
+    // 14-17 % more time (docs/stress.md).
     rtcSetSceneBuildQuality(s, RTC_BUILD_QUALITY_HIGH);
     return s;
 }
 
 void EmbreeAccel::attach_mesh(RTCScene s, uint32_t id, const FlatScene& scene, const MeshInfo& m,
-                              const Instance* to_world) const {
+                              const Instance* to_world, double delta) {
+    ExactMesh& exact = exact_.emplace_back();
+    const vec3* p = &scene.positions[m.first_vertex];
+    exact.vertices.resize(m.vertex_count);
+    for (uint32_t k = 0; k < m.vertex_count; ++k)
+        // The vertices compute mode's one-level BVH holds too (scene/world_vertex.h).
+        exact.vertices[k] = to_world ? world_vertex(*to_world, p[k]) : p[k];
+    exact.triangles.assign(scene.triangles.begin() + m.first_triangle,
+                           scene.triangles.begin() + m.first_triangle + m.triangle_count);
+
     RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_TRIANGLE);
     // New (Embree-owned, padded) buffers: a shared vec3 array would be read 4 bytes past its end
-    // by Embree's 16-byte vertex loads.
-    auto* v = static_cast<vec3*>(rtcSetNewGeometryBuffer(
-        g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3, sizeof(vec3), m.vertex_count));
+    // by Embree's 16-byte vertex loads. Three unshared vertices per triangle: each grows its own.
+    auto* v =
+        static_cast<vec3*>(rtcSetNewGeometryBuffer(g, RTC_BUFFER_TYPE_VERTEX, 0, RTC_FORMAT_FLOAT3,
+                                                   sizeof(vec3), 3 * size_t(m.triangle_count)));
     auto* i = static_cast<uvec3*>(rtcSetNewGeometryBuffer(
         g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, sizeof(uvec3), m.triangle_count));
     check("allocating mesh buffers");
-    const vec3* p = &scene.positions[m.first_vertex];
-    if (to_world) {
-        // The vertices compute mode's one-level BVH holds too (scene/world_vertex.h).
-        for (uint32_t k = 0; k < m.vertex_count; ++k) v[k] = world_vertex(*to_world, p[k]);
-    } else {
-        std::memcpy(v, p, sizeof(vec3) * m.vertex_count);
-    }
-    std::memcpy(i, &scene.triangles[m.first_triangle], sizeof(uvec3) * m.triangle_count);
+    exact.margin = grow_triangles(exact, delta, v);
+    for (uint32_t k = 0; k < m.triangle_count; ++k) i[k] = uvec3(3 * k, 3 * k + 1, 3 * k + 2);
+    rtcSetGeometryUserData(g, &exact);
+    rtcSetGeometryIntersectFilterFunction(g, exact_intersect_filter);
+    rtcSetGeometryOccludedFilterFunction(g, exact_occluded_filter);
     rtcCommitGeometry(g);
     rtcAttachGeometryByID(s, g, id);
     rtcReleaseGeometry(g);
 }
+
+namespace {
+// The largest coordinate of the box, or of its image under the instance's inverse.
+double max_abs(vec3 lo, vec3 hi, const Instance* to_object) {
+    double m = 0.0;
+    for (int c = 0; c < 8; ++c) {
+        const glm::dvec3 p((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+        glm::dvec3 q = p;
+        if (to_object) {
+            const auto row = [&](vec4 r) { return glm::dot(glm::dvec3(r), p) + double(r.w); };
+            q = glm::dvec3(row(to_object->to_object0), row(to_object->to_object1),
+                           row(to_object->to_object2));
+        }
+        m = std::max({m, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+    }
+    return m;
+}
+} // namespace
 
 EmbreeAccel::EmbreeAccel(const FlatScene& scene) {
     device_ = rtcNewDevice(nullptr);
@@ -84,6 +111,12 @@ EmbreeAccel::EmbreeAccel(const FlatScene& scene) {
                       embree_error_name(rtcGetDeviceError(nullptr)));
     rtcSetDeviceMemoryMonitorFunction(device_, &EmbreeAccel::monitor, this);
 
+    // Every ray starts at the camera (the world's origin) or on a surface: within the scene's
+    // box grown to hold the origin, or that box's image in an instanced mesh's object space.
+    const vec3 lo = glm::min(scene.bounds_min, vec3(0.0f)),
+               hi = glm::max(scene.bounds_max, vec3(0.0f));
+    const double world_delta = exact_delta(max_abs(lo, hi, nullptr));
+
     // A mesh that one instance uses goes into the top-level scene as world-space triangles: a
     // one-level BVH saves the instance transform and a second traversal per ray (BENCHMARKS.md,
     // local-peer). A mesh that several instances share is built once and instanced.
@@ -91,8 +124,11 @@ EmbreeAccel::EmbreeAccel(const FlatScene& scene) {
     meshes_.assign(scene.meshes.size(), nullptr);
     for (uint32_t k = 0; k < scene.meshes.size(); ++k) {
         if (uses[k] < 2) continue;
+        double extent = 0.0;
+        for (const Instance& inst : scene.instances)
+            if (inst.mesh == k) extent = std::max(extent, max_abs(lo, hi, &inst));
         RTCScene s = new_scene();
-        attach_mesh(s, 0, scene, scene.meshes[k], nullptr);
+        attach_mesh(s, 0, scene, scene.meshes[k], nullptr, exact_delta(extent));
         rtcCommitScene(s);
         check("building a mesh BVH");
         meshes_[k] = s;
@@ -102,7 +138,7 @@ EmbreeAccel::EmbreeAccel(const FlatScene& scene) {
     for (uint32_t k = 0; k < scene.instances.size(); ++k) {
         const Instance& inst = scene.instances[k];
         if (!meshes_[inst.mesh]) {
-            attach_mesh(top_, k, scene, scene.meshes[inst.mesh], &inst);
+            attach_mesh(top_, k, scene, scene.meshes[inst.mesh], &inst, world_delta);
             continue;
         }
         RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);
@@ -128,8 +164,8 @@ EmbreeAccel::~EmbreeAccel() {
 }
 
 Hit EmbreeAccel::intersect(const Ray& ray) const {
-    RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
+    ExactQuery query;
+    rtcInitIntersectContext(&query.context);
     RTCRayHit rh;
     rh.ray.org_x = ray.origin.x;
     rh.ray.org_y = ray.origin.y;
@@ -144,21 +180,22 @@ Hit EmbreeAccel::intersect(const Ray& ray) const {
     rh.ray.flags = 0;
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
-    rtcIntersect1(top_, &ctx, &rh);
+    rtcIntersect1(top_, &query.context, &rh);
     Hit h;
     if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return h;
     h.found = true;
-    h.t = rh.ray.tfar;
+    const vec3 tuv = exact_hit(query, rh.hit.primID);
+    h.t = tuv.x;
     // A flattened mesh's triangles carry their instance index as geometry ID (constructor).
     h.instance = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? rh.hit.instID[0] : rh.hit.geomID;
     h.primitive = rh.hit.primID;
-    h.bary = vec2(rh.hit.u, rh.hit.v);
+    h.bary = vec2(tuv.y, tuv.z);
     return h;
 }
 
 bool EmbreeAccel::occluded(const Ray& ray) const {
-    RTCIntersectContext ctx;
-    rtcInitIntersectContext(&ctx);
+    ExactQuery query;
+    rtcInitIntersectContext(&query.context);
     RTCRay r;
     r.org_x = ray.origin.x;
     r.org_y = ray.origin.y;
@@ -171,7 +208,7 @@ bool EmbreeAccel::occluded(const Ray& ray) const {
     r.mask = 0xFFFFFFFFu;
     r.time = 0.0f;
     r.flags = 0;
-    rtcOccluded1(top_, &ctx, &r);
+    rtcOccluded1(top_, &query.context, &r);
     return r.tfar < 0.0f; // Embree sets tfar to -inf on a hit
 }
 

@@ -1,15 +1,19 @@
 // Embree 3 acceleration structure for the CPU reference: one Embree geometry per mesh. A mesh that
 // several instances share is one Embree scene, built once and placed by Embree instance
 // geometries; a mesh that one instance uses is a triangle geometry of the top-level scene in world
-// space. Either way the top-level geometry ID is the FlatScene instance index.
+// space. Either way the top-level geometry ID is the FlatScene instance index. Embree traces the
+// triangles grown by a little and an intersection filter keeps the exact hits
+// (cpu_ref/exact_triangles.h): watertight at edges and vertices, as compute mode.
 #pragma once
 
+#include "cpu_ref/exact_triangles.h"
 #include "scene/flatten.h"
 #include "shared/path.h"
 
 #include <embree3/rtcore.h>
 
 #include <atomic>
+#include <deque>
 #include <vector>
 
 namespace tp {
@@ -39,12 +43,14 @@ class EmbreeAccel {
     RTCDevice device_ = nullptr;
     RTCScene top_ = nullptr;
     std::vector<RTCScene> meshes_; // per mesh; null for a mesh placed in world space
+    std::deque<ExactMesh> exact_;  // per Embree geometry, its user data (stable addresses)
     std::atomic<int64_t> bytes_{0};
     static bool monitor(void* self, ssize_t bytes, bool post);
     RTCScene new_scene() const;
-    // Adds mesh m to s as geometry `id`, in object space, or in world space when to_world is set.
+    // Adds mesh m to s as geometry `id`, in object space, or in world space when to_world is set,
+    // grown by delta (exact_triangles.h).
     void attach_mesh(RTCScene s, uint32_t id, const FlatScene& scene, const MeshInfo& m,
-                     const Instance* to_world) const;
+                     const Instance* to_world, double delta);
     void check(const char* what) const;
 };
 

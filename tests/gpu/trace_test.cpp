@@ -89,10 +89,17 @@ std::vector<Ray> random_rays(const FlatScene& scene, size_t n, uint32_t seed) {
     return rays;
 }
 
-// Two hits tie when their distances agree to 1e-6 t (~17 ulp of t): coplanar surfaces (the
-// cubes standing on cornell_glossy's floor) meet the ray at the same t to the rounding of
-// their planes, and the two triangles of a shared edge at one point to a few ulp.
+// Two hits tie when their distances agree to 1e-6 (max|origin| + t) (~17 ulp of the coordinates
+// involved): coplanar surfaces (the cubes standing on cornell_glossy's floor) meet the ray at the
+// same t to the rounding of their planes, and the two triangles of a shared edge at one point
+// to a few ulp. Both round at the size of the origin and the hit point, not of t: rays starting
+// near the floor met it at t ~ 1e-3 with the engines 2e-8 apart (2.5e-5 t), ties all the same.
 const double kTieDistance = 1e-6;
+
+double tie_scale(const Ray& ray, float t) {
+    const vec3 o = glm::abs(ray.origin);
+    return double(std::max(o.x, std::max(o.y, o.z))) + double(t);
+}
 
 // Whether the ray meets the triangle that the GPU's result names, placed in world space as
 // the one-level structures place it (scene/world_vertex.h), at distance t.
@@ -108,7 +115,7 @@ bool meets_at(const FlatScene& scene, const Ray& ray, const TraceResult& g, floa
     vec3 tuv;
     return intersect_triangle(ray.origin, watertight_ray(ray.dir), place(tri.x), place(tri.y),
                               place(tri.z), FLOAT_MAX, tuv) &&
-           std::abs(double(tuv.x) - double(t)) <= kTieDistance * double(t);
+           std::abs(double(tuv.x) - double(t)) <= kTieDistance * tie_scale(ray, t);
 }
 
 // `features`: the mask the trace shader is specialized to, and so the shape of the BVH.
@@ -156,7 +163,7 @@ void compare_with_embree(const FlatScene& scene, uint32_t features) {
             // A tie (coplanar surfaces, a shared edge): the distance must still agree, and the
             // triangle the GPU names must be there.
             ++ties;
-            if (dt > kTieDistance * double(h.t) || !meets_at(scene, rays[i], g, h.t))
+            if (dt > kTieDistance * tie_scale(rays[i], h.t) || !meets_at(scene, rays[i], g, h.t))
                 ++hit_mismatch;
             continue;
         }
@@ -172,9 +179,7 @@ void compare_with_embree(const FlatScene& scene, uint32_t features) {
         const vec3 c = scene.positions[m.first_vertex + tri.z];
         const vec3 ng = glm::normalize(instance_normal_to_world(inst, glm::cross(b - a, c - a)));
         const double cos_i = std::abs(double(glm::dot(ng, rays[i].dir)));
-        const vec3 o = glm::abs(rays[i].origin);
-        const double scale = double(std::max(o.x, std::max(o.y, o.z)) + h.t);
-        worst_t = std::max(worst_t, dt * cos_i / scale);
+        worst_t = std::max(worst_t, dt * cos_i / tie_scale(rays[i], h.t));
     }
     const size_t allowed = rays.size() / 1000;
     INFO(scene.name << ": " << hits << " of " << rays.size() << " rays hit; hit mismatches "

@@ -1,0 +1,63 @@
+// Watertight triangles for Embree: Embree finds the candidates, shared/intersect.h decides.
+//
+// Embree's robust (Pluecker) test passes rays aimed exactly at a vertex (RenderKit/embree
+// issues #174, #181; docs/stress.md, "Embree at vertices"): each triangle computes its own edge
+// functions, and around a vertex they are all rounding noise. Compute mode's test (Woop et al.
+// 2013, shared/intersect.h) does not, and an Embree user geometry running it costs 1.5x Embree's
+// time per ray. Instead, Embree gets each triangle grown by delta in its plane (every edge moved
+// out by delta, the corners mitred), with delta far above Embree's rounding for any ray of the
+// scene, so every ray that meets the exact triangle meets the grown one; an intersection filter
+// then keeps a candidate only where the exact triangle is hit. Where Embree's own barycentrics put
+// the candidate more than 2 delta inside the grown triangle, it is inside the exact one beyond
+// doubt and no exact test is needed (about 9 candidates in 10 on the bunny); the rest run
+// intersect_triangle. The hit's distance and barycentrics are then taken from intersect_triangle
+// on the exact triangle, so Embree and compute mode report the same numbers.
+#pragma once
+
+#include "shared/intersect.h"
+
+#include <embree3/rtcore.h>
+
+#include <vector>
+
+namespace tp {
+
+// One Embree geometry's exact triangles, in the space Embree traces it in (world for a mesh
+// placed in world space, object space for an instanced one).
+struct ExactMesh {
+    std::vector<vec3> vertices;
+    std::vector<uvec3> triangles;
+    float margin = 0.0f; // 2 delta times the longest grown edge: see exact_margin_accepts
+};
+
+// An Embree query context that the filters below fill in: the candidate they accepted last (the
+// nearest, since Embree offers only candidates nearer than the current hit), the ray as its
+// geometry saw it, and the exact test's result where they ran it.
+struct ExactQuery {
+    RTCIntersectContext context; // first: Embree passes &context to the filters
+    const ExactMesh* mesh = nullptr;
+    vec3 org{0.0f}, dir{0.0f};
+    bool tested = false;
+    vec3 tuv{0.0f};
+};
+
+// delta for rays whose origins and vertices lie within `extent` of the origin in every
+// coordinate: 2^-17 extent, 128 float ulps of the largest coordinate. Embree's Moeller test
+// rounds its edge tests by about 10 ulps of |origin - vertex| <= 2 extent.
+double exact_delta(double extent);
+
+// The triangles grown by delta, three unshared vertices each (out: 3 per triangle); returns the
+// mesh's margin. Corners are mitred: a corner of angle theta moves by delta / sin(theta / 2),
+// at most 1024 delta (below 0.11 degrees the growth covers the corner's edges only up to that
+// distance); a zero-area triangle stays as it is (the exact test never accepts it).
+float grow_triangles(const ExactMesh& mesh, double delta, vec3* out);
+
+// The intersection and occlusion filters of a geometry whose user data is its ExactMesh.
+void exact_intersect_filter(const RTCFilterFunctionNArguments* args);
+void exact_occluded_filter(const RTCFilterFunctionNArguments* args);
+
+// The exact distance and barycentrics (weights of vertices 1 and 2) of the hit the query ended
+// with, triangle `primitive` of query.mesh.
+vec3 exact_hit(const ExactQuery& query, uint32_t primitive);
+
+} // namespace tp
