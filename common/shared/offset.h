@@ -60,7 +60,7 @@ const float FLOAT_UNIT_ROUNDOFF = 5.9604645e-8f;
 // point, and rounds at that size, as in object space.
 //
 // An earlier version counted T in m at 40 u: 0.3 units at 1e5 along every axis (38 ulps), which
-// put the floor's new origins inside the sphere resting on it (docs/stress.md, "Open").
+// put the floor's new origins inside the sphere resting on it (docs/stress.md, "Fixed, and what is left").
 const float OFFSET_GAMMA_M = 40.0f * FLOAT_UNIT_ROUNDOFF;
 const float OFFSET_GAMMA_P = 3.0f * FLOAT_UNIT_ROUNDOFF;
 

@@ -29,9 +29,9 @@ Size gpu_size() {
     return s;
 }
 
-// Open bugs (docs/stress.md, "Open"): left out below, checked in [!shouldfail] test cases. The
-// IOR 3 furnaces are here for lavapipe's sake: their 512 bounces exceed its 65535-iteration
-// loop budget, so they cannot run (on the H200 they pass, bench --stress).
+// Cases lavapipe cannot run, left out below and checked in a [!shouldfail] test case: the IOR 3
+// furnaces' 512 bounces exceed its 65535-iteration loop budget (on the H200 they pass, bench
+// --stress; docs/stress.md, "Fixed, and what is left").
 const std::vector<std::string> kOpenDielectric = {"glass furnace IOR 3", "total internal"};
 
 } // namespace
