@@ -105,9 +105,9 @@ void exact_occluded_filter(const RTCFilterFunctionNArguments* args) {
 vec3 exact_hit(const ExactQuery& query, uint32_t primitive) {
     if (query.tested) return query.tuv;
     // A hit the margin accepted lies more than delta inside the triangle, so no edge decision is
-    // left: the distance from the plane as intersect_triangle takes it (the same expression, the
-    // same number) and the barycentrics of Moeller & Trumbore (1997), equal to the watertight
-    // test's to rounding. Two independent divisions instead of intersect_triangle's chain of the
+    // left: the distance from the plane as intersect_triangle takes it (the same expression) and
+    // the barycentrics of Moeller & Trumbore (1997), equal to the watertight test's to
+    // rounding. Two independent divisions instead of intersect_triangle's chain of the
     // ray's shear and its own: this runs once per hit (docs/stress.md, "Embree at vertices").
     const uvec3 t = query.mesh->triangles[primitive];
     const std::vector<vec3>& v = query.mesh->vertices;

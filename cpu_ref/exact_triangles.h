@@ -10,8 +10,10 @@
 // then keeps a candidate only where the exact triangle is hit. Where Embree's own barycentrics put
 // the candidate more than 2 delta inside the grown triangle, it is inside the exact one beyond
 // doubt and no exact test is needed (about 9 candidates in 10 on the bunny); the rest run
-// intersect_triangle. The hit's distance and barycentrics are then taken from intersect_triangle
-// on the exact triangle, so Embree and compute mode report the same numbers.
+// intersect_triangle. The hit's distance is then the exact triangle's plane distance as
+// intersect_triangle computes it, and its barycentrics those of the exact triangle (exact_hit),
+// so Embree and compute mode decide every edge and vertex alike and agree on t and the
+// barycentrics to rounding.
 #pragma once
 
 #include "shared/intersect.h"
