@@ -1,11 +1,10 @@
 #include "cpu_ref/embree_accel.h"
 
 #include "scene/world_vertex.h"
+#include "shared/surface.h"
 #include "util/error.h"
 
 #include <algorithm>
-#include <cmath>
-#include <cstring>
 #include <limits>
 
 namespace tp {
@@ -91,14 +90,9 @@ namespace {
 double max_abs(vec3 lo, vec3 hi, const Instance* to_object) {
     double m = 0.0;
     for (int c = 0; c < 8; ++c) {
-        const glm::dvec3 p((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
-        glm::dvec3 q = p;
-        if (to_object) {
-            const auto row = [&](vec4 r) { return glm::dot(glm::dvec3(r), p) + double(r.w); };
-            q = glm::dvec3(row(to_object->to_object0), row(to_object->to_object1),
-                           row(to_object->to_object2));
-        }
-        m = std::max({m, std::abs(q.x), std::abs(q.y), std::abs(q.z)});
+        const vec3 p((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
+        const vec3 q = glm::abs(to_object ? instance_point_to_object(*to_object, p) : p);
+        m = std::max(m, double(glm::max(q.x, glm::max(q.y, q.z))));
     }
     return m;
 }

@@ -17,9 +17,14 @@ struct TriangleRef {
 };
 
 // A triangle's world-space corners as bits, rotated to start at the lexicographically smallest
-// corner: the two windings of one vertex set get two keys, and a reversed partner is found by
-// looking up the key of (a, c, b).
+// corner: the two windings of one vertex set get two keys. The reversed winding (a, c, b) of a
+// key (a, b, c) starts at the same smallest corner, so its key is the same with b and c swapped.
 using Key = std::array<uint32_t, 9>;
+
+Key reversed(Key k) {
+    std::swap_ranges(k.begin() + 3, k.begin() + 6, k.begin() + 6);
+    return k;
+}
 
 struct Keyed {
     Key key;
@@ -86,22 +91,23 @@ std::optional<DielectricInterfaces> merge_dielectric_interfaces(const Scene& sce
         if (merges(scene.materials[scene.objects[o].material])) candidates.push_back(o);
     if (candidates.size() < 2) return std::nullopt;
 
-    const auto corners = [&](TriangleRef r) {
-        const Object& o = scene.objects[r.object];
-        const Mesh& m = scene.meshes[o.mesh];
-        const glm::dmat4 to_world(o.transform);
-        const uvec3 t = m.triangles[r.triangle];
-        return std::array<vec3, 3>{world_point(to_world, m.positions[t.x]),
-                                   world_point(to_world, m.positions[t.y]),
-                                   world_point(to_world, m.positions[t.z])};
-    };
     // Sorted by key (44 bytes a triangle): each triangle's reversed partners are one range.
     std::vector<Keyed> by_key;
-    for (uint32_t o : candidates)
-        for (uint32_t t = 0; t < scene.meshes[scene.objects[o].mesh].triangles.size(); ++t) {
-            const auto c = corners({o, t});
-            by_key.push_back({key_of(c[0], c[1], c[2]), {o, t}});
+    for (uint32_t o : candidates) {
+        const Object& obj = scene.objects[o];
+        const Mesh& m = scene.meshes[obj.mesh];
+        const glm::dmat4 to_world(obj.transform);
+        for (uint32_t t = 0; t < m.triangles.size(); ++t) {
+            const uvec3 tri = m.triangles[t];
+            by_key.push_back({key_of(world_point(to_world, m.positions[tri.x]),
+                                     world_point(to_world, m.positions[tri.y]),
+                                     world_point(to_world, m.positions[tri.z])),
+                              {o, t}});
         }
+    }
+    // Each triangle's own key, in the order the pairing below visits them.
+    std::vector<Key> keys(by_key.size());
+    for (size_t k = 0; k < by_key.size(); ++k) keys[k] = by_key[k].key;
     std::sort(by_key.begin(), by_key.end());
 
     // removed[o][t]: triangle t leaves object o (to an interface, or dropped as the copy).
@@ -111,13 +117,13 @@ std::optional<DielectricInterfaces> merge_dielectric_interfaces(const Scene& sce
     // (A, B) -> the triangles of A that become the interface between A and B (A < B).
     std::map<std::pair<uint32_t, uint32_t>, std::vector<bool>> interfaces;
     uint64_t faces = 0;
+    size_t visit = 0;
     for (uint32_t o : candidates)
         for (uint32_t t = 0; t < removed[o].size(); ++t) {
+            const Keyed partner{reversed(keys[visit++]), {0, 0}};
             if (removed[o][t]) continue;
-            const auto c = corners({o, t});
-            const Keyed reversed{key_of(c[0], c[2], c[1]), {0, 0}};
-            for (auto it = std::lower_bound(by_key.begin(), by_key.end(), reversed);
-                 it != by_key.end() && it->key == reversed.key; ++it) {
+            for (auto it = std::lower_bound(by_key.begin(), by_key.end(), partner);
+                 it != by_key.end() && it->key == partner.key; ++it) {
                 const TriangleRef r = it->ref;
                 if (r.object == o || removed[r.object][r.triangle]) continue;
                 const TriangleRef a = r.object < o ? r : TriangleRef{o, t};
@@ -165,15 +171,10 @@ std::optional<DielectricInterfaces> merge_dielectric_interfaces(const Scene& sce
     // What stays of each object; an object all of whose faces left is gone.
     std::vector<bool> gone(s.objects.size(), false);
     for (uint32_t o : candidates) {
-        std::vector<bool> keep(removed[o].size());
-        bool any_removed = false, any_kept = false;
-        for (size_t t = 0; t < keep.size(); ++t) {
-            keep[t] = !removed[o][t];
-            any_removed |= removed[o][t];
-            any_kept |= keep[t];
-        }
-        if (!any_removed) continue;
-        gone[o] = !any_kept;
+        std::vector<bool> keep = removed[o];
+        keep.flip();
+        if (std::find(keep.begin(), keep.end(), false) == keep.end()) continue; // untouched
+        gone[o] = std::find(keep.begin(), keep.end(), true) == keep.end();
         if (gone[o]) continue;
         const Mesh& m = scene.meshes[scene.objects[o].mesh];
         s.objects[o].mesh = uint32_t(s.meshes.size());
