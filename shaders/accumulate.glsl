@@ -45,11 +45,6 @@ bool loop_budget_held() {
     return n == batch.probe_iterations;
 }
 
-// The batch's samples of one pixel, in order. Each loop iteration traces one vertex of the
-// current sample's path; when the path has ended the sample is kept (or, past the loop budget,
-// dropped) and the next sample starts in the same iteration's place (integrator.glsl,
-// PathState), so a subgroup runs until its lanes' sums of path lengths are done rather than
-// the longest path of every sample.
 PixelCounts render_pixel(uvec2 pixel) {
     PixelCounts c = pixel_counts_zero();
     dvec3 sum = dvec3(0.0);
@@ -58,35 +53,30 @@ PixelCounts render_pixel(uvec2 pixel) {
     uint p = pixel.y * params.camera.width + pixel.x;
     uint end = batch.sample_begin + batch.sample_count;
     uint s = accum[p].next_sample;
+    for (; s < end; ++s) {
+        RayCounts rays;
+        rays.camera = 0u;
+        rays.extension = 0u;
+        rays.shadow = 0u;
 #ifdef TP_DEBUG_SHADER
-    bool view = debug_header.integrator != INTEGRATOR_PATH; // a debug view: no path
+        vec3 L = debug_header.integrator == INTEGRATOR_PATH
+                     ? path_radiance(pixel.x, pixel.y, s, rays)
+                     : debug_view_radiance(pixel.x, pixel.y, s);
 #else
-    const bool view = false;
+        vec3 L = path_radiance(pixel.x, pixel.y, s, rays);
 #endif
-    if (s < end) {
-        PathState st = path_begin(pixel.x, pixel.y, s);
-        for (;;) {
-            if (!view && path_step(st)) continue;
-#ifdef TP_DEBUG_SHADER
-            if (view) st.L = debug_view_radiance(pixel.x, pixel.y, s);
-#endif
-            if (!loop_budget_held()) break; // sample s is discarded and traced again
-            if (!view) {
-                c.rays.camera += st.rays.camera;
-                c.rays.extension += st.rays.extension;
-                c.rays.shadow += st.rays.shadow;
-            }
-            if (is_finite3(st.L)) {
-                dvec3 d = dvec3(st.L);
-                sum += d;
-                sum_sq += d * d;
-                ++n;
-            } else {
-                ++c.nan;
-            }
-            if (++s == end) break;
-            st = path_begin(pixel.x, pixel.y, s);
+        if (!loop_budget_held()) break; // sample s is discarded and traced again
+        c.rays.camera += rays.camera;
+        c.rays.extension += rays.extension;
+        c.rays.shadow += rays.shadow;
+        if (!is_finite3(L)) {
+            ++c.nan;
+            continue;
         }
+        dvec3 d = dvec3(L);
+        sum += d;
+        sum_sq += d * d;
+        ++n;
     }
     c.truncated = s < end ? 1u : 0u;
     accum[p].sum += sum;

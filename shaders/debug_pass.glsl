@@ -18,9 +18,11 @@ void debug_pass(uvec2 pixel) {
     // One sample per dispatch (vulkan_rt/render_loop.cpp), well inside lavapipe's loop budget.
     g_path_log_on = true;
     for (uint s = batch.sample_begin; s < batch.sample_begin + batch.sample_count; ++s) {
-        PathState st = path_begin(pixel.x, pixel.y, s);
-        while (path_step(st)) {
-        }
+        RayCounts rays;
+        rays.camera = 0u;
+        rays.extension = 0u;
+        rays.shadow = 0u;
+        path_radiance(pixel.x, pixel.y, s, rays);
     }
 }
 

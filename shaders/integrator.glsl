@@ -25,183 +25,159 @@ struct RayCounts {
 #define PATH_LOG(x)
 #endif
 
-// One path between two vertices. The path loop is a step function rather than a loop over
-// bounces so that an invocation whose path has ended starts its next sample at once
-// (accumulate.glsl): the lanes of a subgroup then no longer wait at the end of every sample
-// for the longest of their paths (path regeneration; Novák, Havran and Dachsbacher 2010).
-struct PathState {
-    RngKey key;
-    Ray ray;
-    vec3 L; // radiance so far
-    vec3 T; // throughput
-    float prev_pdf;
-    uint bounce;
-    uint sample_index;
-    bool prev_specular;
-    RayCounts rays; // this sample's
-};
+// Radiance estimate of sample `sample_index` of pixel (x, y); rays are counted into `rays`.
+vec3 path_radiance(uint x, uint y, uint sample_index, inout RayCounts rays) {
+    RngKey key = rng_key(params.seed, y * params.camera.width + x, sample_index);
 
-// Sample `sample_index` of pixel (x, y) at its camera ray.
-PathState path_begin(uint x, uint y, uint sample_index) {
-    PathState st;
-    st.key = rng_key(params.seed, y * params.camera.width + x, sample_index);
-    st.ray = camera_ray(params.camera, st.key, x, y);
-    st.L = vec3(0.0f);
-    st.T = vec3(1.0f);
-    st.prev_pdf = 0.0f;
-    st.bounce = 0u;
-    st.sample_index = sample_index;
-    st.prev_specular = true; // the camera ray: emitters seen directly get full weight
-    st.rays.camera = 1u;
-    st.rays.extension = 0u;
-    st.rays.shadow = 0u;
-    return st;
-}
+    Ray ray = camera_ray(params.camera, key, x, y);
+    ++rays.camera;
 
-// Traces st.ray and shades its hit, one vertex of cpu_ref/integrator.cpp's path loop. Returns
-// false once the path has ended; st.L is then the sample's radiance estimate.
-bool path_step(inout PathState st) {
-    PATH_LOG(PathVertex rec = path_vertex_begin(st.sample_index, st.bounce, st.ray));
-    TraceHit hit;
-    if (!trace_closest(st.ray, hit)) {
-        if (features_environment(scene_features) && params.env_light != NO_INDEX) {
-            float light_pdf = scene_light_selection_pdf(params.env_light) *
-                              scene_environment_pdf(st.ray.dir);
-            st.L += st.T * scene_environment_radiance(st.ray.dir) *
-                 emission_mis_weight(st.prev_specular, st.prev_pdf, light_pdf);
-            PATH_LOG(rec.emitted = st.T * scene_environment_radiance(st.ray.dir) *
-                                   emission_mis_weight(st.prev_specular, st.prev_pdf, light_pdf);
-                     rec.mis_emission = emission_mis_weight(st.prev_specular, st.prev_pdf, light_pdf));
+    vec3 L = vec3(0.0f);
+    vec3 T = vec3(1.0f);
+    bool prev_specular = true; // the camera ray: emitters seen directly get full weight
+    float prev_pdf = 0.0f;
+    for (uint bounce = 0u;; ++bounce) {
+        PATH_LOG(PathVertex rec = path_vertex_begin(sample_index, bounce, ray));
+        TraceHit hit;
+        if (!trace_closest(ray, hit)) {
+            if (features_environment(scene_features) && params.env_light != NO_INDEX) {
+                float light_pdf = scene_light_selection_pdf(params.env_light) *
+                                  scene_environment_pdf(ray.dir);
+                L += T * scene_environment_radiance(ray.dir) *
+                     emission_mis_weight(prev_specular, prev_pdf, light_pdf);
+                PATH_LOG(rec.emitted = T * scene_environment_radiance(ray.dir) *
+                                       emission_mis_weight(prev_specular, prev_pdf, light_pdf);
+                         rec.mis_emission = emission_mis_weight(prev_specular, prev_pdf, light_pdf));
+            }
+            PATH_LOG(rec.radiance = L; path_log_emit(rec, TERM_ESCAPED));
+            break;
         }
-        PATH_LOG(rec.radiance = st.L; path_log_emit(rec, TERM_ESCAPED));
-        return false;
-    }
-    uint light_offset = instances[hit.instance].light_offset;
-    SurfacePoint sp = scene_surface(hit);
-    surface_snap_to_ray(sp, st.ray.origin, st.ray.dir);
-    Material mat = scene_material(hit.instance, sp.uv);
-    vec3 wo = -st.ray.dir;
-    PATH_LOG(rec.event = VERTEX_HIT; rec.t = hit.t; rec.instance = hit.instance;
-             rec.primitive = hit.primitive; rec.bary = hit.bary;
-             rec.material = instances[hit.instance].material; rec.position = sp.p);
+        uint light_offset = instances[hit.instance].light_offset;
+        SurfacePoint sp = scene_surface(hit);
+        surface_snap_to_ray(sp, ray.origin, ray.dir);
+        Material mat = scene_material(hit.instance, sp.uv);
+        vec3 wo = -ray.dir;
+        PATH_LOG(rec.event = VERTEX_HIT; rec.t = hit.t; rec.instance = hit.instance;
+                 rec.primitive = hit.primitive; rec.bary = hit.bary;
+                 rec.material = instances[hit.instance].material; rec.position = sp.p);
 
-    // 1. Emission, front face only.
-    float cos_emit = dot(sp.ng, wo);
-    PATH_LOG(rec.cos_emit = cos_emit);
-    if (feature_on(scene_features, FEATURE_EMISSIVE_TRIANGLES) && !is_black(mat.ke) &&
-        cos_emit > 0.0f) {
-        float light_pdf = 0.0f;
-        if (light_offset != NO_INDEX) {
-            uint li = light_offset + hit.primitive;
-            light_pdf = scene_light_selection_pdf(li) *
-                        triangle_light_pdf(lights[li].area, hit.t, cos_emit);
+        // 1. Emission, front face only.
+        float cos_emit = dot(sp.ng, wo);
+        PATH_LOG(rec.cos_emit = cos_emit);
+        if (feature_on(scene_features, FEATURE_EMISSIVE_TRIANGLES) && !is_black(mat.ke) &&
+            cos_emit > 0.0f) {
+            float light_pdf = 0.0f;
+            if (light_offset != NO_INDEX) {
+                uint li = light_offset + hit.primitive;
+                light_pdf = scene_light_selection_pdf(li) *
+                            triangle_light_pdf(lights[li].area, hit.t, cos_emit);
+            }
+            L += T * mat.ke * emission_mis_weight(prev_specular, prev_pdf, light_pdf);
+            PATH_LOG(rec.emitted = T * mat.ke * emission_mis_weight(prev_specular, prev_pdf, light_pdf);
+                     rec.mis_emission = emission_mis_weight(prev_specular, prev_pdf, light_pdf));
         }
-        st.L += st.T * mat.ke * emission_mis_weight(st.prev_specular, st.prev_pdf, light_pdf);
-        PATH_LOG(rec.emitted = st.T * mat.ke * emission_mis_weight(st.prev_specular, st.prev_pdf, light_pdf);
-                 rec.mis_emission = emission_mis_weight(st.prev_specular, st.prev_pdf, light_pdf));
-    }
 
-    // 2. The maximum number of scattering events.
-    PATH_LOG(rec.ng = sp.ng; rec.ns = sp.ns);
-    if (st.bounce >= params.max_depth) {
-        PATH_LOG(rec.radiance = st.L; path_log_emit(rec, TERM_MAX_DEPTH));
-        return false;
-    }
-    if (!feature_on(scene_features, FEATURE_DIELECTRIC) || mat.type != MATERIAL_DIELECTRIC)
-        surface_face_viewer(sp, wo);
-    PATH_LOG(rec.ng = sp.ng; rec.ns = sp.ns);
+        // 2. The maximum number of scattering events.
+        PATH_LOG(rec.ng = sp.ng; rec.ns = sp.ns);
+        if (bounce >= params.max_depth) {
+            PATH_LOG(rec.radiance = L; path_log_emit(rec, TERM_MAX_DEPTH));
+            break;
+        }
+        if (!feature_on(scene_features, FEATURE_DIELECTRIC) || mat.type != MATERIAL_DIELECTRIC)
+            surface_face_viewer(sp, wo);
+        PATH_LOG(rec.ng = sp.ng; rec.ns = sp.ns);
 
-    // 3. Next-event estimation. Where the trace include sets TRACE_SHADOW_AFTER_SCATTER
-    // (pipeline mode) the shadow ray waits for step 4 to be drawn; its contribution still
-    // reaches L before anything else does, so the sums are the CPU's in the CPU's order.
-    bool shadow_pending = false;
-    Ray shadow;
-    vec3 shadow_contrib;
-    if (features_sample_lights(scene_features) && !material_is_delta_in(scene_features, mat) &&
-        params.light_count > 0u) {
-        uint slot = alias_slot_from_bits(rng_bounce_bits(st.key, st.bounce, RNG_LIGHT_SLOT),
-                                         params.light_count);
-        AliasEntry e = light_table[slot];
-        uint li = alias_resolve(slot, e.prob, e.alias, rng_bounce(st.key, st.bounce, RNG_LIGHT_COIN));
-        float sel_pdf = scene_light_selection_pdf(li);
-        vec2 u = vec2(rng_bounce(st.key, st.bounce, RNG_LIGHT_U), rng_bounce(st.key, st.bounce, RNG_LIGHT_V));
-        LightSample ls =
-            scene_sample_light(li, sp.p, u, rng_bounce_bits(st.key, st.bounce, RNG_ENV_SLOT),
-                               rng_bounce(st.key, st.bounce, RNG_ENV_COIN));
-        PATH_LOG(rec.light = li; rec.light_wi = ls.wi; rec.light_pdf = sel_pdf * ls.pdf;
-                 rec.mis_light = 1.0f;
-                 rec.rng[RNG_LIGHT_SLOT] = uint_to_unit_float(rng_bounce_bits(st.key, st.bounce, RNG_LIGHT_SLOT));
-                 rec.rng[RNG_LIGHT_COIN] = rng_bounce(st.key, st.bounce, RNG_LIGHT_COIN);
-                 rec.rng[RNG_LIGHT_U] = u.x; rec.rng[RNG_LIGHT_V] = u.y;
-                 rec.rng[RNG_ENV_SLOT] = uint_to_unit_float(rng_bounce_bits(st.key, st.bounce, RNG_ENV_SLOT));
-                 rec.rng[RNG_ENV_COIN] = rng_bounce(st.key, st.bounce, RNG_ENV_COIN));
-        if (ls.pdf > 0.0f && dot(ls.wi, sp.ng) > 0.0f) {
-            vec3 f = bsdf_eval_in(scene_features, mat, sp.ns, wo, ls.wi);
-            PATH_LOG(rec.light_f = f);
-            if (!is_black(f) && !is_black(ls.radiance)) {
-                float light_pdf = sel_pdf * ls.pdf;
-                vec3 contrib = st.T * f * (dot(sp.ns, ls.wi) / light_pdf) * ls.radiance;
-                if (features_mis(scene_features) && !ls.delta)
-                    contrib *= power_heuristic(light_pdf,
-                                               bsdf_pdf_in(scene_features, mat, sp.ns, wo, ls.wi));
-                PATH_LOG(rec.light_bsdf_pdf = bsdf_pdf(mat, sp.ns, wo, ls.wi);
-                         rec.mis_light = ls.delta ? 1.0f : power_heuristic(light_pdf, rec.light_bsdf_pdf);
-                         rec.nee = contrib);
-                ++st.rays.shadow;
-                Ray sr = shadow_ray(sp.p, sp.p_error, sp.ng, ls, lights[li]);
-                if (TRACE_SHADOW_AFTER_SCATTER) {
-                    shadow_pending = true;
-                    shadow = sr;
-                    shadow_contrib = contrib;
-                } else {
-                    bool occluded = trace_occluded(sr);
-                    if (!occluded) st.L += contrib;
-                    PATH_LOG(rec.shadow = occluded ? SHADOW_OCCLUDED : SHADOW_UNOCCLUDED);
+        // 3. Next-event estimation. Where the trace include sets TRACE_SHADOW_AFTER_SCATTER
+        // (pipeline mode) the shadow ray waits for step 4 to be drawn; its contribution still
+        // reaches L before anything else does, so the sums are the CPU's in the CPU's order.
+        bool shadow_pending = false;
+        Ray shadow;
+        vec3 shadow_contrib;
+        if (features_sample_lights(scene_features) && !material_is_delta_in(scene_features, mat) &&
+            params.light_count > 0u) {
+            uint slot = alias_slot_from_bits(rng_bounce_bits(key, bounce, RNG_LIGHT_SLOT),
+                                             params.light_count);
+            AliasEntry e = light_table[slot];
+            uint li = alias_resolve(slot, e.prob, e.alias, rng_bounce(key, bounce, RNG_LIGHT_COIN));
+            float sel_pdf = scene_light_selection_pdf(li);
+            vec2 u = vec2(rng_bounce(key, bounce, RNG_LIGHT_U), rng_bounce(key, bounce, RNG_LIGHT_V));
+            LightSample ls =
+                scene_sample_light(li, sp.p, u, rng_bounce_bits(key, bounce, RNG_ENV_SLOT),
+                                   rng_bounce(key, bounce, RNG_ENV_COIN));
+            PATH_LOG(rec.light = li; rec.light_wi = ls.wi; rec.light_pdf = sel_pdf * ls.pdf;
+                     rec.mis_light = 1.0f;
+                     rec.rng[RNG_LIGHT_SLOT] = uint_to_unit_float(rng_bounce_bits(key, bounce, RNG_LIGHT_SLOT));
+                     rec.rng[RNG_LIGHT_COIN] = rng_bounce(key, bounce, RNG_LIGHT_COIN);
+                     rec.rng[RNG_LIGHT_U] = u.x; rec.rng[RNG_LIGHT_V] = u.y;
+                     rec.rng[RNG_ENV_SLOT] = uint_to_unit_float(rng_bounce_bits(key, bounce, RNG_ENV_SLOT));
+                     rec.rng[RNG_ENV_COIN] = rng_bounce(key, bounce, RNG_ENV_COIN));
+            if (ls.pdf > 0.0f && dot(ls.wi, sp.ng) > 0.0f) {
+                vec3 f = bsdf_eval_in(scene_features, mat, sp.ns, wo, ls.wi);
+                PATH_LOG(rec.light_f = f);
+                if (!is_black(f) && !is_black(ls.radiance)) {
+                    float light_pdf = sel_pdf * ls.pdf;
+                    vec3 contrib = T * f * (dot(sp.ns, ls.wi) / light_pdf) * ls.radiance;
+                    if (features_mis(scene_features) && !ls.delta)
+                        contrib *= power_heuristic(light_pdf,
+                                                   bsdf_pdf_in(scene_features, mat, sp.ns, wo, ls.wi));
+                    PATH_LOG(rec.light_bsdf_pdf = bsdf_pdf(mat, sp.ns, wo, ls.wi);
+                             rec.mis_light = ls.delta ? 1.0f : power_heuristic(light_pdf, rec.light_bsdf_pdf);
+                             rec.nee = contrib);
+                    ++rays.shadow;
+                    Ray sr = shadow_ray(sp.p, sp.p_error, sp.ng, ls, lights[li]);
+                    if (TRACE_SHADOW_AFTER_SCATTER) {
+                        shadow_pending = true;
+                        shadow = sr;
+                        shadow_contrib = contrib;
+                    } else {
+                        bool occluded = trace_occluded(sr);
+                        if (!occluded) L += contrib;
+                        PATH_LOG(rec.shadow = occluded ? SHADOW_OCCLUDED : SHADOW_UNOCCLUDED);
+                    }
                 }
             }
         }
-    }
 
-    // 4. Scattering.
-    BsdfSample bs = bsdf_sample_in(
-        scene_features, mat, sp.ns, wo, rng_bounce(st.key, st.bounce, RNG_LOBE),
-        vec2(rng_bounce(st.key, st.bounce, RNG_DIR_U), rng_bounce(st.key, st.bounce, RNG_DIR_V)));
-    PATH_LOG(rec.rng[RNG_LOBE] = rng_bounce(st.key, st.bounce, RNG_LOBE);
-             rec.rng[RNG_DIR_U] = rng_bounce(st.key, st.bounce, RNG_DIR_U);
-             rec.rng[RNG_DIR_V] = rng_bounce(st.key, st.bounce, RNG_DIR_V); rec.lobe = bs.lobe;
-             rec.wi = bs.wi; rec.bsdf_pdf = bs.pdf; rec.bsdf_weight = bs.weight;
-             rec.radiance = st.L; rec.throughput = st.T);
-    bool scatter = bs.lobe != LOBE_NONE && scatter_is_consistent(sp.ng, wo, bs.wi, bs.lobe);
-    // Pipeline mode: the scattered ray is made before the shadow ray is traced, so that the
-    // surface point is dead across that traceRayEXT.
-    Ray next;
-    if (TRACE_SHADOW_AFTER_SCATTER) {
-        next = spawn_ray(sp.p, sp.p_error, sp.ng, bs.wi);
-        if (shadow_pending) {
-            bool occluded = trace_occluded(shadow);
-            if (!occluded) st.L += shadow_contrib;
-            PATH_LOG(rec.shadow = occluded ? SHADOW_OCCLUDED : SHADOW_UNOCCLUDED;
-                     rec.radiance = st.L);
+        // 4. Scattering.
+        BsdfSample bs = bsdf_sample_in(
+            scene_features, mat, sp.ns, wo, rng_bounce(key, bounce, RNG_LOBE),
+            vec2(rng_bounce(key, bounce, RNG_DIR_U), rng_bounce(key, bounce, RNG_DIR_V)));
+        PATH_LOG(rec.rng[RNG_LOBE] = rng_bounce(key, bounce, RNG_LOBE);
+                 rec.rng[RNG_DIR_U] = rng_bounce(key, bounce, RNG_DIR_U);
+                 rec.rng[RNG_DIR_V] = rng_bounce(key, bounce, RNG_DIR_V); rec.lobe = bs.lobe;
+                 rec.wi = bs.wi; rec.bsdf_pdf = bs.pdf; rec.bsdf_weight = bs.weight;
+                 rec.radiance = L; rec.throughput = T);
+        bool scatter = bs.lobe != LOBE_NONE && scatter_is_consistent(sp.ng, wo, bs.wi, bs.lobe);
+        // Pipeline mode: the scattered ray is made before the shadow ray is traced, so that the
+        // surface point is dead across that traceRayEXT.
+        Ray next;
+        if (TRACE_SHADOW_AFTER_SCATTER) {
+            next = spawn_ray(sp.p, sp.p_error, sp.ng, bs.wi);
+            if (shadow_pending) {
+                bool occluded = trace_occluded(shadow);
+                if (!occluded) L += shadow_contrib;
+                PATH_LOG(rec.shadow = occluded ? SHADOW_OCCLUDED : SHADOW_UNOCCLUDED;
+                         rec.radiance = L);
+            }
         }
+        if (!scatter) {
+            PATH_LOG(path_log_emit(rec, bs.lobe == LOBE_NONE ? TERM_NO_SCATTER : TERM_INCONSISTENT));
+            break;
+        }
+        T *= bs.weight;
+        prev_specular = (bs.lobe & LOBE_SPECULAR) != 0u;
+        prev_pdf = bs.pdf;
+        PATH_LOG(rec.rng[RNG_ROULETTE] = rng_bounce(key, bounce, RNG_ROULETTE);
+                 rec.roulette_q = roulette_survival(T, bounce + 1u, params.min_depth));
+        if (!roulette_apply(T, bounce + 1u, params.min_depth, rng_bounce(key, bounce, RNG_ROULETTE))) {
+            PATH_LOG(rec.throughput = T; path_log_emit(rec, TERM_ROULETTE));
+            break;
+        }
+        ray = TRACE_SHADOW_AFTER_SCATTER ? next : spawn_ray(sp.p, sp.p_error, sp.ng, bs.wi);
+        ++rays.extension;
+        PATH_LOG(rec.throughput = T; path_log_emit(rec, TERM_CONTINUE));
     }
-    if (!scatter) {
-        PATH_LOG(path_log_emit(rec, bs.lobe == LOBE_NONE ? TERM_NO_SCATTER : TERM_INCONSISTENT));
-        return false;
-    }
-    st.T *= bs.weight;
-    st.prev_specular = (bs.lobe & LOBE_SPECULAR) != 0u;
-    st.prev_pdf = bs.pdf;
-    PATH_LOG(rec.rng[RNG_ROULETTE] = rng_bounce(st.key, st.bounce, RNG_ROULETTE);
-             rec.roulette_q = roulette_survival(st.T, st.bounce + 1u, params.min_depth));
-    if (!roulette_apply(st.T, st.bounce + 1u, params.min_depth, rng_bounce(st.key, st.bounce, RNG_ROULETTE))) {
-        PATH_LOG(rec.throughput = st.T; path_log_emit(rec, TERM_ROULETTE));
-        return false;
-    }
-    st.ray = TRACE_SHADOW_AFTER_SCATTER ? next : spawn_ray(sp.p, sp.p_error, sp.ng, bs.wi);
-    ++st.rays.extension;
-    PATH_LOG(rec.throughput = st.T; path_log_emit(rec, TERM_CONTINUE));
-    ++st.bounce;
-    return true;
+    return L;
 }
 
 #endif // TP_SHADERS_INTEGRATOR_GLSL
