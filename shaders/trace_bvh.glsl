@@ -27,8 +27,9 @@
 // scene without instancing saves registers.
 //
 // Either way each visited node tests both children's boxes; leaves of triangles are
-// intersected at once, inner children are pushed far-first so that the nearer one is visited
-// next.
+// intersected at once; of two inner children met, the far one is pushed and the near one is
+// visited next straight from a register (Aila and Laine 2009), so the stack, which the driver
+// keeps in local memory, is touched only for the far child.
 #ifndef TP_SHADERS_TRACE_BVH_GLSL
 #define TP_SHADERS_TRACE_BVH_GLSL
 
@@ -99,15 +100,19 @@ bool bvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
 
     uint stack[BVH_STACK_SIZE];
     uint sp = 0u;
-    stack[sp++] = batch.bvh_top_root;
+    uint next = batch.bvh_top_root; // the entry to visit next; BVH_EMPTY: pop one
     for (;;) {
-        if (two_level && inst != BVH_EMPTY && sp == inst_sp) { // mesh done: back to world space
-            inst = BVH_EMPTY;
-            org = ray.origin;
-            inv_dir = world_inv_dir;
+        if (next == BVH_EMPTY) {
+            if (two_level && inst != BVH_EMPTY && sp == inst_sp) { // mesh done: back to world space
+                inst = BVH_EMPTY;
+                org = ray.origin;
+                inv_dir = world_inv_dir;
+            }
+            if (sp == 0u) break;
+            next = stack[--sp];
         }
-        if (sp == 0u) break;
-        uint entry = stack[--sp];
+        uint entry = next;
+        next = BVH_EMPTY;
         if (two_level && (entry & BVH_INSTANCE_FLAG) != 0u) {
             inst = entry & ~BVH_INSTANCE_FLAG;
             inst_sp = sp;
@@ -165,11 +170,11 @@ bool bvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
         if (hit0 && hit1) {
             bool near0 = t0 <= t1;
             stack[sp++] = near0 ? e1 : e0;
-            stack[sp++] = near0 ? e0 : e1;
+            next = near0 ? e0 : e1;
         } else if (hit0) {
-            stack[sp++] = e0;
+            next = e0;
         } else if (hit1) {
-            stack[sp++] = e1;
+            next = e1;
         }
     }
     return found;
