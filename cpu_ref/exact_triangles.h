@@ -29,7 +29,7 @@ namespace tp {
 struct ExactMesh {
     std::vector<vec3> vertices;
     std::vector<uvec3> triangles;
-    float margin = 0.0f; // 2 delta times the longest grown edge: see exact_margin_accepts
+    float margin = 0.0f; // 2 delta times the longest grown edge (grow_triangles)
 };
 
 // An Embree query context that the filters below fill in: the candidate they accepted last (the

@@ -55,8 +55,8 @@ struct FlatScene {
     vec3 bounds_min{0.0f}, bounds_max{0.0f}; // world-space bounding box (camera-relative)
     uint64_t instanced_triangles = 0;        // triangles as rendered (instances counted)
     uint64_t unique_triangles = 0;           // triangles stored
-    uint64_t dielectric_interfaces =
-        0; // coincident dielectric faces merged (dielectric_interfaces.h)
+    // Coincident dielectric faces merged into interfaces (dielectric_interfaces.h).
+    uint64_t dielectric_interfaces = 0;
 
     const Material& material_of(uint32_t instance) const {
         return materials[instances[instance].material];
