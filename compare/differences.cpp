@@ -1,7 +1,10 @@
 #include "compare/differences.h"
 
+#include <fmt/format.h>
+
 #include <algorithm>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 
 namespace tp {
@@ -18,6 +21,36 @@ double floor_variance(double a, double b, double channel_scale, double relative_
     return relative_floor * relative_floor * (m * m + channel_scale * channel_scale);
 }
 
+std::string borrowing_sentence(const Differences& d) {
+    if (d.rule.borrower == VarianceRule::None) return "equal spp: each image's own variance";
+    const bool a = d.rule.borrower == VarianceRule::A;
+    size_t pixels = 0;
+    for (uint8_t b : d.borrowed) pixels += b;
+    return fmt::format("{} ({}x fewer samples) took {}'s per-sample variance where it was larger: "
+                       "{} of {} pixel-channels, {} of {} pixels",
+                       a ? "A" : "B", d.rule.ratio, a ? "B" : "A", d.variance_borrowed,
+                       3 * d.borrowed.size(), pixels, d.borrowed.size());
+}
+
+PairVariance pair_variance(const VarianceRule& rule, double va, double vb, double va2, double vb2) {
+    PairVariance out;
+    double ka = rule.inv_dof_a, kb = rule.inv_dof_b;
+    if (rule.borrower == VarianceRule::A && vb * rule.ratio > va) {
+        va = vb * rule.ratio;
+        va2 = vb2 * rule.ratio * rule.ratio;
+        ka = rule.inv_dof_b;
+        out.borrowed = true;
+    } else if (rule.borrower == VarianceRule::B && va * rule.ratio > vb) {
+        vb = va * rule.ratio;
+        vb2 = va2 * rule.ratio * rule.ratio;
+        kb = rule.inv_dof_a;
+        out.borrowed = true;
+    }
+    out.var = va + vb;
+    out.welch = va2 * ka + vb2 * kb;
+    return out;
+}
+
 Differences compute_differences(const RgbImage& a, const RgbImage& b, double relative_floor) {
     Differences out;
     out.width = a.width;
@@ -28,25 +61,38 @@ Differences compute_differences(const RgbImage& a, const RgbImage& b, double rel
     auto inv_dof = [](const RgbImage& img) {
         return img.spp ? 1.0 / double(std::max<int64_t>(*img.spp - 1, 1)) : 0.0;
     };
-    const double ka = inv_dof(a), kb = inv_dof(b);
+    VarianceRule& rule = out.rule;
+    rule.inv_dof_a = inv_dof(a);
+    rule.inv_dof_b = inv_dof(b);
+    // The side with strictly fewer samples borrows, when both images have variance and spp.
+    if (a.has_variance() && b.has_variance() && a.spp && b.spp && *a.spp != *b.spp) {
+        rule.borrower = *a.spp < *b.spp ? VarianceRule::A : VarianceRule::B;
+        rule.ratio = rule.borrower == VarianceRule::A ? double(*b.spp) / double(*a.spp)
+                                                      : double(*a.spp) / double(*b.spp);
+    }
+    out.borrowed.assign(n, 0);
     for (size_t c = 0; c < 3; ++c) {
         double scale = 0.0;
         for (size_t i = 0; i < n; ++i)
             scale += std::max(std::fabs(a.mean[c][i]), std::fabs(b.mean[c][i]));
         scale /= double(n);
-        out.d[c].resize(n);
-        out.noise[c].resize(n);
-        out.var[c].resize(n);
-        out.welch[c].resize(n);
+        for (Planes* p :
+             {&out.d, &out.var_a, &out.var_b, &out.floor, &out.noise, &out.var, &out.welch})
+            (*p)[c].resize(n);
         for (size_t i = 0; i < n; ++i) {
             const double va = a.has_variance() ? a.var[c][i] : 0.0;
             const double vb = b.has_variance() ? b.var[c][i] : 0.0;
+            const PairVariance pv = pair_variance(rule, va, vb, va * va, vb * vb);
             out.d[c][i] = a.mean[c][i] - b.mean[c][i];
-            out.noise[c][i] = va + vb;
-            out.var[c][i] =
-                va + vb + floor_variance(a.mean[c][i], b.mean[c][i], scale, relative_floor);
-            out.welch[c][i] = va * va * ka + vb * vb * kb;
+            out.var_a[c][i] = va;
+            out.var_b[c][i] = vb;
+            out.floor[c][i] = floor_variance(a.mean[c][i], b.mean[c][i], scale, relative_floor);
+            out.noise[c][i] = pv.var;
+            out.var[c][i] = pv.var + out.floor[c][i];
+            out.welch[c][i] = pv.welch;
             out.at_floor += (va + vb == 0.0);
+            out.variance_borrowed += pv.borrowed;
+            out.borrowed[i] |= uint8_t(pv.borrowed);
         }
     }
     return out;

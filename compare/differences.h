@@ -2,26 +2,79 @@
 // Welch-Satterthwaite degrees of freedom, shared by the pixel test, the tile test and the
 // report. Pixels are independent (every random number depends on its own pixel, DESIGN.md),
 // so these are the only second moments the tests need.
+//
+// Unequal sample counts: the image with fewer samples borrows the other's per-sample variance
+// when that is larger. Var(mean) = sigma^2 / n, and each image estimates sigma^2 as
+// s^2 = n var. For a heavy-tailed pixel (a caustic reached only when a BSDF sample happens to
+// hit the light through glass) the side with few samples has usually not met its rare large
+// samples, so its mean is low *and* its s^2 is far too small: the one-sample failure of
+// Student's t under skew, whose tail error is of order gamma / sqrt(n) (Hall 1987, "Edgeworth
+// expansion for Student's t statistic under minimal moment conditions"). At equal n the two
+// images enter symmetrically and that error cancels to first order; at n_a << n_b the
+// difference is dominated by a alone and it does not. The side with more samples has met the
+// rare samples far more often, so under H0 (one estimator, one sigma) its s^2 is the better
+// estimate. Taking max(s^2_a, s^2_b) for the side with fewer samples keeps both tails in
+// check: a pixel that missed the rare samples gets the variance they imply (z ~ -sqrt(lambda)
+// for lambda expected rare samples instead of a huge t), and one that met k of them keeps its
+// own, larger s^2, which self-normalises the excess (z ~ sqrt(k) instead of (k - lambda) /
+// sqrt(lambda)). When the two estimators differ in variance the larger one can only make the
+// test conservative, never liberal. The pixel test applies the rule per pixel; the tile test
+// applies it to the tile's summed variances (tile_test.h), where the max of two sums inflates
+// the variance less than a sum of per-pixel maxima. docs/compare.md has the calibration at
+// 1:8 and 1:64.
 #pragma once
 
 #include "compare/rgb_image.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
 
 namespace tp {
 
 // Relative floor r for the standard deviation of a difference; see floor_variance().
 constexpr double kDefaultRelativeFloor = 1e-4;
 
+// The borrowing rule above for one pair of variances of the mean (a pixel's, or a tile's
+// sums): which side borrows, the ratio n_other / n_self that turns the other side's variance
+// of the mean into this side's, and 1 / dof of each image's estimate (0: taken as exact).
+struct VarianceRule {
+    enum Borrower : uint8_t { None, A, B } borrower = None;
+    double ratio = 1.0;
+    double inv_dof_a = 0.0, inv_dof_b = 0.0;
+};
+
+struct PairVariance {
+    double var = 0.0;   // var_a + var_b after borrowing
+    double welch = 0.0; // sum over the summed pixels of var_i^2 / dof_i, for Welch-Satterthwaite
+    bool borrowed = false;
+};
+
+// va, vb: the images' variances of the mean (summed over a tile's pixels for the tile test);
+// va2, vb2: the sums of their squares over the same pixels (va^2, vb^2 for one pixel).
+PairVariance pair_variance(const VarianceRule& rule, double va, double vb, double va2, double vb2);
+
 struct Differences {
     int width = 0, height = 0;
+    VarianceRule rule;
     Planes d;            // a - b
-    Planes noise;        // var_a + var_b: the variance the images estimated
+    Planes var_a, var_b; // each image's own variance of the mean (0 for an exact image)
+    Planes floor;        // floor^2 (floor_variance)
+    Planes noise;        // var_a + var_b after borrowing: the variance the images estimated
     Planes var;          // noise + floor^2
-    Planes welch;        // var_a^2/(n_a-1) + var_b^2/(n_b-1); 0 where the floor alone remains
+    Planes welch;        // var_a^2/(dof_a) + var_b^2/(dof_b); 0 where the floor alone remains
     size_t at_floor = 0; // pixel-channels whose estimated variance is 0 in both images
+    // Pixel-channels where the image with fewer samples took the other's per-sample variance.
+    size_t variance_borrowed = 0;
+    std::vector<uint8_t> borrowed; // per pixel: 1 when any of its channels borrowed
 
     // Welch-Satterthwaite: nu = var^2 / welch; infinite (normal) when welch is 0.
     double dof(int c, size_t i) const;
 };
+
+// "A (16 spp) took B's per-sample variance (128 spp) where it was larger: 812 of 3072
+// pixel-channels, 301 of 1024 pixels", for the verdict's reports.
+std::string borrowing_sentence(const Differences& d);
 
 // Squared floor sigma_f^2 = r^2 (max(|a|,|b|)^2 + s^2), s = the channel's mean of max(|a|,|b|).
 // Why: a pixel whose samples were all equal has a variance estimate of exactly 0, and two
@@ -36,7 +89,8 @@ struct Differences {
 double floor_variance(double a, double b, double channel_scale, double relative_floor);
 
 // `a` must have variance channels or `b` must (the caller checks); an image without them is
-// taken as exact (variance 0), as Mitsuba 3's render tests do with their reference.
+// taken as exact (variance 0), as Mitsuba 3's render tests do with their reference. The
+// variance borrowing above needs both images' variance and spp, and unequal spp.
 Differences compute_differences(const RgbImage& a, const RgbImage& b, double relative_floor);
 
 } // namespace tp

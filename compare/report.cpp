@@ -68,6 +68,7 @@ std::string numbers_table(const CompareResult& r) {
             r.global.correlation[0], r.global.correlation[1], r.global.correlation[2], r.global.dof,
             r.global.p_value, r.global.chi2[0], r.global.chi2[1], r.global.chi2[2],
             r.global.tiles()));
+    if (r.diff.rule.borrower != VarianceRule::None) row("unequal spp", borrowing_sentence(r.diff));
     row("zero-variance floor",
         fmt::format("relative {}; {} pixel-channels had no variance in either image",
                     r.floor_relative, r.diff.at_floor));
@@ -141,7 +142,7 @@ void write_report(const std::string& dir, const CompareResult& r, const RgbImage
         }
     write_png(base + "tiles.png", w, h, rgb);
 
-    const std::vector<Figure> figures = {
+    std::vector<Figure> figures = {
         {"a.png", "A", markup_escape(a.path)},
         {"b.png", "B", markup_escape(b.path)},
         {"difference.png", "A &minus; B",
@@ -156,6 +157,15 @@ void write_report(const std::string& dir, const CompareResult& r, const RgbImage
         {"tiles.png", fmt::format("tile z ({}&times;{})", r.global.tile, r.global.tile),
          fmt::format("channel of largest |z|; full colour at |z| = {:.2f}", tile_full)},
     };
+    if (r.diff.rule.borrower != VarianceRule::None) {
+        // Orange where the image with fewer samples took the other's per-sample variance.
+        for (size_t i = 0; i < n; ++i)
+            put(rgb, i,
+                r.diff.borrowed[i] ? std::array<uint8_t, 3>{240, 140, 0}
+                                   : std::array<uint8_t, 3>{60, 60, 60});
+        write_png(base + "variance.png", w, h, rgb);
+        figures.push_back({"variance.png", "variance borrowed", borrowing_sentence(r.diff)});
+    }
     std::string figs;
     for (const Figure& f : figures)
         figs += fmt::format("<figure><img src=\"{}\" alt=\"{}\"><figcaption><b>{}</b><br>{}"

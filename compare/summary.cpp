@@ -71,6 +71,18 @@ nlohmann::json compare_json(const CompareResult& r, const RgbImage& a, const Rgb
           {"GB", r.global.correlation[2]}}},
         {"channels", chans}};
     j["warnings"] = r.warnings;
+    const VarianceRule& rule = r.diff.rule;
+    size_t borrowed_pixels = 0;
+    for (uint8_t b : r.diff.borrowed) borrowed_pixels += b;
+    j["variance"] = {
+        {"rule", "the image with fewer samples takes the other's per-sample variance where it is "
+                 "larger (docs/compare.md, unequal sample counts)"},
+        {"borrower", rule.borrower == VarianceRule::A   ? nlohmann::json("a")
+                     : rule.borrower == VarianceRule::B ? nlohmann::json("b")
+                                                        : nlohmann::json(nullptr)},
+        {"spp_ratio", rule.ratio},
+        {"pixel_channels_borrowed", r.diff.variance_borrowed},
+        {"pixels_borrowed", borrowed_pixels}};
     j["floor"] = {{"relative", r.floor_relative},
                   {"pixel_channels_without_variance", r.diff.at_floor}};
 
@@ -96,12 +108,17 @@ nlohmann::json compare_json(const CompareResult& r, const RgbImage& a, const Rgb
 std::string compare_verdict_line(const CompareResult& r) {
     const size_t m = r.local.holm.rejected.size();
     return fmt::format(
-        "{}: p = {:.3g} at alpha {} ({}; local: {} of {} pixel-channels significant, p = {:.3g}{}; "
-        "global: chi-square over {} tiles of {}x{}, p = {:.3g}; relMSE {:.3g})",
+        "{}: p = {:.3g} at alpha {} ({}{}; local: {} of {} pixel-channels significant, p = "
+        "{:.3g}{}; global: chi-square over {} tiles of {}x{}, p = {:.3g}; relMSE {:.3g})",
         r.different ? "different" : "consistent", r.p_value, r.alpha,
-        r.mode == CompareMode::TwoSample ? "two-sample" : "reference mode", r.local.holm.count, m,
-        r.local.holm.p_value, r.local_in_verdict() ? "" : ", advisory", r.global.tiles(),
-        r.global.tile, r.global.tile, r.global.p_value, r.metrics.all.relmse);
+        r.mode == CompareMode::TwoSample ? "two-sample" : "reference mode",
+        r.diff.rule.borrower == VarianceRule::None
+            ? ""
+            : fmt::format(", {} spp ratio 1:{:g}, variance borrowed in {} pixel-channels",
+                          r.diff.rule.borrower == VarianceRule::A ? "A:B" : "B:A",
+                          r.diff.rule.ratio, r.diff.variance_borrowed),
+        r.local.holm.count, m, r.local.holm.p_value, r.local_in_verdict() ? "" : ", advisory",
+        r.global.tiles(), r.global.tile, r.global.tile, r.global.p_value, r.metrics.all.relmse);
 }
 
 } // namespace tp

@@ -91,6 +91,27 @@ def cornell_glossy():
     return cornell_room({"cube": {"type": "box"}}, objects, materials)
 
 
+def cornell_spheres():
+    # The caustic scene: the empty box with a mirror sphere (back, left in the image) and a
+    # glass sphere (front, right), 100 mm in radius, lit only by the box's small light. Light
+    # reaches the floor and walls through the glass and off the mirror, and a path tracer finds
+    # those paths only when a BSDF-sampled direction happens to hit the light through the
+    # specular chain (next-event estimation cannot see the light through glass): rare, large
+    # samples, the heavy-tailed pixel estimates compare must stay calibrated on
+    # (docs/compare.md). Glass needs many bounces, hence the high maximum depth; Russian
+    # roulette ends paths long before it.
+    scene = cornell_room(
+        {"ball": {"type": "sphere", "subdivisions": 5}},
+        [{"name": "mirror", "mesh": "ball", "material": "mirror",
+          "transform": {"translate": [0.39, 0.1, 0.37], "scale": 0.1}},
+         {"name": "glass", "mesh": "ball", "material": "glass",
+          "transform": {"translate": [0.17, 0.1, 0.18], "scale": 0.1}}],
+        {"mirror": {"type": "mirror", "Ks": [0.95, 0.95, 0.95]},
+         "glass": {"type": "dielectric", "Ni": 1.5, "Tf": [1, 1, 1]}})
+    scene["render"]["max_depth"] = 1000
+    return scene
+
+
 def spheres():
     # Mirror, glass and Phong spheres on a checkered floor, lit by a point light, a sun and a
     # dim sky.
@@ -139,8 +160,8 @@ def furnace(rho=0.8):
     }
 
 
-SCENES = {"cornell": cornell, "cornell_glossy": cornell_glossy, "spheres": spheres,
-          "furnace": furnace}
+SCENES = {"cornell": cornell, "cornell_glossy": cornell_glossy,
+          "cornell_spheres": cornell_spheres, "spheres": spheres, "furnace": furnace}
 
 
 def encode(value, indent=0):

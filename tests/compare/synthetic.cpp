@@ -9,7 +9,8 @@
 namespace tp::test {
 namespace {
 
-double draw(Noise noise, std::mt19937_64& rng) {
+// `q`: the pixel's caustic probability (Noise::Caustic only).
+double draw(Noise noise, double q, std::mt19937_64& rng) {
     std::normal_distribution<double> normal;
     std::uniform_real_distribution<double> uniform;
     switch (noise) {
@@ -21,11 +22,19 @@ double draw(Noise noise, std::mt19937_64& rng) {
         return 0.6 * std::pow(1.0 - uniform(rng), -1.0 / 2.5);
     case Noise::Firefly:
         return 0.5 * (1.0 + 0.3 * normal(rng)) + (uniform(rng) < 0.01 ? 50.0 : 0.0);
+    case Noise::Caustic:
+        return 0.5 * (1.0 + 0.3 * normal(rng)) + (uniform(rng) < q ? 0.5 / q : 0.0);
     }
     return 0.0;
 }
 
 } // namespace
+
+double caustic_probability(int x, int y) {
+    // A Weyl sequence over the pixel index (golden ratio) scatters the exponents.
+    const double u = std::fmod(double(y * 4099 + x) * 0.6180339887498949, 1.0);
+    return std::pow(10.0, -4.0 + 3.0 * u);
+}
 
 double true_mean(const SyntheticSpec& s, int channel, int x, int y) {
     if (x < 2) return 0.0;
@@ -44,11 +53,12 @@ RgbImage synthetic_render(const SyntheticSpec& s, uint64_t seed, const Bias& bia
             const glm::dvec3 mu(k * true_mean(s, 0, x, y), k * true_mean(s, 1, x, y),
                                 k * true_mean(s, 2, x, y));
             const uint32_t p = uint32_t(y * s.width + x);
+            const double q = caustic_probability(x, y);
             for (uint32_t i = 0; i < s.spp; ++i) {
                 glm::dvec3 yv;
-                yv.x = draw(s.noise, rng);
-                yv.y = s.correlated_channels ? yv.x : draw(s.noise, rng);
-                yv.z = s.correlated_channels ? yv.x : draw(s.noise, rng);
+                yv.x = draw(s.noise, q, rng);
+                yv.y = s.correlated_channels ? yv.x : draw(s.noise, q, rng);
+                yv.z = s.correlated_channels ? yv.x : draw(s.noise, q, rng);
                 film.add_sample(p, mu * yv);
             }
         }

@@ -15,6 +15,9 @@ enum class Noise {
     Lognormal, // Y = exp(s N - s^2/2), s = 1: skewness 6.2, a heavy right tail
     Pareto,    // Y = 0.6 (1-U)^(-1/2.5): tail index 2.5, infinite third moment
     Firefly,   // Y = 0.5 (1 + 0.3 N) + 50 Bernoulli(0.01): rare huge samples
+    Caustic,   // Y = 0.5 (1 + 0.3 N) + (0.5 / q) Bernoulli(q), q from 1e-4 to 1e-1 by pixel
+               // (caustic_probability): half of every pixel's light comes in rare samples,
+               // some of them far rarer than 1 / spp
 };
 
 struct SyntheticSpec {
@@ -23,6 +26,10 @@ struct SyntheticSpec {
     Noise noise = Noise::Gaussian;
     bool correlated_channels = false; // one Y for R, G, B (same path), else one per channel
 };
+
+// Caustic noise: the probability q of a pixel's rare sample, log-uniform in [1e-4, 1e-1] over
+// the pixels in a fixed scattered order (the same in every rendering of the spec).
+double caustic_probability(int x, int y);
 
 // The true mean image: a smooth colour gradient, black (exactly 0, no noise) in the 2 leftmost
 // columns so that zero-variance pixels are part of every test.
