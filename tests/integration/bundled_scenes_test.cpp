@@ -52,7 +52,8 @@ TEST_CASE("the bundled scene files are what scenes/generate_scenes.py writes",
 
 TEST_CASE("every bundled scene loads and flattens and renders without NaN",
           "[integration][scenes]") {
-    for (const char* name : {"cornell", "cornell_glossy", "spheres", "furnace"}) {
+    for (const char* name :
+         {"cornell", "cornell_glossy", "cornell_spheres", "spheres", "furnace"}) {
         DYNAMIC_SECTION(name) {
             std::vector<std::string> warnings;
             tp::Scene scene = tp::load_scene(name, warnings);

@@ -27,6 +27,8 @@ TEST_CASE("every bundled scene has the features its file describes", "[features]
     // Read from scenes/*.json:
     //  cornell: Phong materials with Kd only, the "light" material has Ke; every mesh used once.
     //  cornell_glossy: cornell + five "cube" instances with Ks 0.8 (Ns 1..10000).
+    //  cornell_spheres: the empty box's emitter, a mirror and a glass ball as two instances
+    //           of "ball".
     //  furnace: one inward sphere of a Phong material with Kd and Ke; nothing else.
     //  spheres: floor with map_Kd "checker"; mirror, glass (dielectric) and a Phong ball with Ks
     //           0.5 as three instances of "ball"; a point and a directional light; a constant
@@ -39,6 +41,8 @@ TEST_CASE("every bundled scene has the features its file describes", "[features]
         {"cornell", FEATURE_EMISSIVE_TRIANGLES},
         {"cornell_glossy",
          FEATURE_EMISSIVE_TRIANGLES | FEATURE_PHONG_SPECULAR | FEATURE_INSTANCING},
+        {"cornell_spheres",
+         FEATURE_EMISSIVE_TRIANGLES | FEATURE_MIRROR | FEATURE_DIELECTRIC | FEATURE_INSTANCING},
         {"furnace", FEATURE_EMISSIVE_TRIANGLES},
         {"spheres", FEATURE_TEXTURES | FEATURE_PHONG_SPECULAR | FEATURE_MIRROR |
                         FEATURE_DIELECTRIC | FEATURE_POINT_LIGHTS | FEATURE_DIRECTIONAL_LIGHTS |
