@@ -23,6 +23,7 @@ ExrImage render_exr(const RenderSpec& spec) {
     o.max_depth = spec.max_depth;
     o.eye = spec.eye;
     o.target = spec.target;
+    o.fov = spec.fov;
     apply_overrides(scene, o);
     RenderOptions opt;
     opt.seed = spec.seed;

@@ -20,6 +20,7 @@ struct RenderSpec {
     uint32_t threads = 0; // 0: all cores
     std::optional<uint32_t> max_depth;
     std::optional<vec3> eye, target;
+    std::optional<float> fov;
 };
 
 // Renders on the CPU backend in this process; twinpath:spp set as the CLI sets it.
