@@ -75,3 +75,39 @@ TEST_CASE("report: every image loads in headless Chromium and the page carries t
     CHECK(broken.find("data-images-loaded=\"4/5\"") != std::string::npos);
     CHECK(count(broken, "data-loaded=\"no\"") == 1);
 }
+
+TEST_CASE("report at unequal spp shows the pixels whose variance was borrowed",
+          "[compare][report][cli][unequal-spp]") {
+    if (std::string(TWINPATH_TEST_CHROMIUM).empty() ||
+        !std::filesystem::exists(TWINPATH_TEST_CHROMIUM))
+        FAIL("chromium not found at configure time (Debian package `chromium`)");
+    const std::string dir = temp_dir("report-unequal");
+    RenderSpec a;
+    a.scene = "cornell_spheres";
+    a.width = a.height = 32;
+    a.seed = 3;
+    RenderSpec b = a;
+    b.spp = 128;
+    b.seed = 4;
+    render_cpu_file(a, dir + "/a.exr");
+    render_cpu_file(b, dir + "/b.exr");
+    const ProcessResult r =
+        run(fmt::format("{} compare {} {} --report {} --json {}", shell_quote(twinpath_bin()),
+                        shell_quote(dir + "/a.exr"), shell_quote(dir + "/b.exr"),
+                        shell_quote(dir + "/report"), shell_quote(dir + "/r.json")));
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("A:B spp ratio 1:8, variance borrowed in"));
+    const auto j = nlohmann::json::parse(std::ifstream(dir + "/r.json"));
+    CHECK(j["variance"]["borrower"] == "a");
+    CHECK(j["variance"]["spp_ratio"] == 8.0);
+    const size_t borrowed = j["variance"]["pixel_channels_borrowed"];
+    CHECK(borrowed > 0);
+    CHECK(borrowed < 3u * 32u * 32u); // A's own variance is the larger one somewhere
+
+    const std::string dom = dump_dom(dir + "/report/index.html");
+    INFO(dom.substr(0, 2000));
+    CHECK(dom.find("data-images-loaded=\"6/6\"") != std::string::npos);
+    CHECK(dom.find(fmt::format("{} of {} pixel-channels", borrowed, 3 * 32 * 32)) !=
+          std::string::npos);
+}
