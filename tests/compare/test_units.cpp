@@ -146,3 +146,41 @@ TEST_CASE("reference mode enlarges tiles to 2^16 samples and leaves pixels advis
     CHECK_FALSE(r.local_in_verdict());
     CHECK(r.reference_is_a == false);
 }
+
+TEST_CASE("unequal spp: the image with fewer samples borrows the larger per-sample variance",
+          "[compare][units][unequal-spp]") {
+    // A: 16 spp, variance of the mean 0.01 (s^2 = 0.16); B: 128 spp. Where B's s^2 = 128 vB
+    // exceeds 0.16, A's variance of the mean becomes s^2_B / 16 = 8 vB with B's dof (127);
+    // where it does not, A keeps its own (dof 15). B's side never changes.
+    const RgbImage a = flat_image(2, 1, 1.0, 0.01, 16);
+    RgbImage b = flat_image(2, 1, 0.9, 0.0, 128);
+    for (size_t c = 0; c < 3; ++c) b.var[c] = {0.004, 0.0005}; // s^2_B = 0.512 and 0.064
+    const Differences d = compute_differences(a, b, 0.0);
+    CHECK(d.rule.borrower == VarianceRule::A);
+    CHECK(d.rule.ratio == 8.0);
+    // Pixel 0 borrows: 8 * 0.004 + 0.004; Welch term (0.032^2) / 127 + 0.004^2 / 127.
+    CHECK(d.noise[0][0] == Approx(0.036));
+    CHECK(d.welch[0][0] == Approx((0.032 * 0.032 + 0.004 * 0.004) / 127.0));
+    // Pixel 1 keeps A's own: 0.01 + 0.0005; Welch 0.01^2 / 15 + 0.0005^2 / 127.
+    CHECK(d.noise[0][1] == Approx(0.0105));
+    CHECK(d.welch[0][1] == Approx(0.01 * 0.01 / 15.0 + 0.0005 * 0.0005 / 127.0));
+    CHECK(d.variance_borrowed == 3);
+    CHECK(d.borrowed == std::vector<uint8_t>{1, 0});
+    // Swapped, B is the borrower with the same numbers.
+    const Differences s = compute_differences(b, a, 0.0);
+    CHECK(s.rule.borrower == VarianceRule::B);
+    CHECK(s.noise[0][0] == Approx(0.036));
+    CHECK(s.noise[0][1] == Approx(0.0105));
+    // Equal spp, or an spp missing: nothing is borrowed.
+    CHECK(compute_differences(a, flat_image(2, 1, 0.9, 0.004, 16), 0.0).rule.borrower ==
+          VarianceRule::None);
+    CHECK(compute_differences(a, flat_image(2, 1, 0.9, 0.004), 0.0).rule.borrower ==
+          VarianceRule::None);
+    // The tile test applies the rule to the tile's sums: one 2x1 tile, A's summed variance
+    // 0.02 against 8 (0.004 + 0.0005) = 0.036, so A borrows: 0.036 + 0.0045 = 0.0405 (the sum
+    // of the per-pixel results would be 0.0465). Both of A's terms then carry B's dof.
+    const TileTest t = tile_test(d, 2);
+    const double welch =
+        (64.0 * (0.004 * 0.004 + 0.0005 * 0.0005) + 0.004 * 0.004 + 0.0005 * 0.0005) / 127.0;
+    CHECK(t.z[0][0] == Approx(equivalent_normal(0.2 / std::sqrt(0.0405), 0.0405 * 0.0405 / welch)));
+}
