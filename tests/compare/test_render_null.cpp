@@ -64,10 +64,10 @@ TEST_CASE("size on real renders at unequal spp: cornell_spheres (caustics), corn
         size_t trials;
     };
     for (const Ratio ratio :
-         {Ratio{"cornell_spheres", 16, 16, 30}, Ratio{"cornell_spheres", 16, 128, 40},
-          Ratio{"cornell_spheres", 8, 512, 20}, Ratio{"cornell", 16, 128, 30},
-          Ratio{"cornell", 8, 512, 10}, Ratio{"spheres", 16, 128, 30},
-          Ratio{"spheres", 8, 512, 10}}) {
+         {Ratio{"cornell_spheres", 16, 16, 20}, Ratio{"cornell_spheres", 16, 128, 30},
+          Ratio{"cornell_spheres", 8, 512, 15}, Ratio{"cornell", 16, 128, 20},
+          Ratio{"cornell", 8, 512, 8}, Ratio{"spheres", 16, 128, 20},
+          Ratio{"spheres", 8, 512, 8}}) {
         size_t rejected05 = 0, rejected01 = 0;
         for (uint32_t i = 0; i < ratio.trials; ++i) {
             RenderSpec a, b;
