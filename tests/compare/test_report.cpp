@@ -34,13 +34,24 @@ size_t count(const std::string& s, const std::string& what) {
     return n;
 }
 
+void require_chromium() {
+    if (std::string(TWINPATH_TEST_CHROMIUM).empty() ||
+        !std::filesystem::exists(TWINPATH_TEST_CHROMIUM))
+        FAIL("chromium not found at configure time (Debian package `chromium`)");
+}
+
+// `twinpath compare dir/a.exr dir/b.exr --report dir/report --json dir/r.json`.
+ProcessResult compare_with_report(const std::string& dir) {
+    return run(fmt::format("{} compare {} {} --report {} --json {}", shell_quote(twinpath_bin()),
+                           shell_quote(dir + "/a.exr"), shell_quote(dir + "/b.exr"),
+                           shell_quote(dir + "/report"), shell_quote(dir + "/r.json")));
+}
+
 } // namespace
 
 TEST_CASE("report: every image loads in headless Chromium and the page carries the verdict",
           "[compare][report][cli]") {
-    if (std::string(TWINPATH_TEST_CHROMIUM).empty() ||
-        !std::filesystem::exists(TWINPATH_TEST_CHROMIUM))
-        FAIL("chromium not found at configure time (Debian package `chromium`)");
+    require_chromium();
     const std::string dir = temp_dir("report");
     RenderSpec a;
     a.width = a.height = 32;
@@ -50,10 +61,7 @@ TEST_CASE("report: every image loads in headless Chromium and the page carries t
     b.max_depth = 1; // a biased B: the page must say "different"
     render_cpu_file(a, dir + "/a.exr");
     render_cpu_file(b, dir + "/b.exr");
-    const ProcessResult r =
-        run(fmt::format("{} compare {} {} --report {} --json {}", shell_quote(twinpath_bin()),
-                        shell_quote(dir + "/a.exr"), shell_quote(dir + "/b.exr"),
-                        shell_quote(dir + "/report"), shell_quote(dir + "/r.json")));
+    const ProcessResult r = compare_with_report(dir);
     INFO(r.out);
     REQUIRE(r.exit_code == 1);
     const std::string page = dir + "/report/index.html";
@@ -78,9 +86,7 @@ TEST_CASE("report: every image loads in headless Chromium and the page carries t
 
 TEST_CASE("report at unequal spp shows the pixels whose variance was borrowed",
           "[compare][report][cli][unequal-spp]") {
-    if (std::string(TWINPATH_TEST_CHROMIUM).empty() ||
-        !std::filesystem::exists(TWINPATH_TEST_CHROMIUM))
-        FAIL("chromium not found at configure time (Debian package `chromium`)");
+    require_chromium();
     const std::string dir = temp_dir("report-unequal");
     RenderSpec a;
     a.scene = "cornell_spheres";
@@ -91,10 +97,7 @@ TEST_CASE("report at unequal spp shows the pixels whose variance was borrowed",
     b.seed = 4;
     render_cpu_file(a, dir + "/a.exr");
     render_cpu_file(b, dir + "/b.exr");
-    const ProcessResult r =
-        run(fmt::format("{} compare {} {} --report {} --json {}", shell_quote(twinpath_bin()),
-                        shell_quote(dir + "/a.exr"), shell_quote(dir + "/b.exr"),
-                        shell_quote(dir + "/report"), shell_quote(dir + "/r.json")));
+    const ProcessResult r = compare_with_report(dir);
     INFO(r.out);
     REQUIRE(r.exit_code == 0);
     CHECK_THAT(r.out, Catch::Contains("A:B spp ratio 1:8, variance borrowed in"));
