@@ -18,10 +18,17 @@ configure: deps
 build: configure
 	cmake --build --preset $(PRESET)
 
-demo: build
+# The demo builds only the executable; the tests (and Catch2) are make test's business.
+demo: configure
+	@echo "twinpath: building the executable (about 5 minutes on 2 cores the first time)"
+	cmake --build --preset $(PRESET) --target twinpath
 	scripts/demo.sh $(TWINPATH) $(OUT)
 
-test: test-deps build
+# Configures again with the tests switched on: a build tree that make demo configured has
+# them off, and the test-only programs (chromium, spirv-val) were not installed then.
+test: test-deps
+	cmake --preset $(PRESET) -DTWINPATH_TESTS=ON
+	cmake --build --preset $(PRESET)
 	ctest --preset $(PRESET)
 
 bench: build

@@ -4,14 +4,22 @@
 #   scripts/deps.sh test    build packages plus what the test suite drives (make test)
 set -euo pipefail
 
+# Each package is here because the build, the demo or a CMake package config needs it; a
+# debootstrapped minimal Debian 12 (scripts/fresh_machine_check.sh) proves the list.
 build_pkgs=(
   cmake ninja-build g++ pkg-config
-  libembree-dev libtbb-dev libglm-dev libboost-dev
+  libembree-dev libtbb-dev libglm-dev libboost-dev libpng-dev
   libvulkan-dev glslang-tools mesa-vulkan-drivers vulkan-validationlayers
   libopenimageio-dev libopenexr-dev
+  # OpenImageIO's CMake package (OpenImageIOTargets.cmake) checks that its tools exist.
+  openimageio-tools
   nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libfmt-dev
   embree-tools
+  # scripts/demo.sh reads `twinpath info --json` with python3.
+  python3
 )
+# Only the test suite needs these (make test): Catch2, headless Chromium for the HTML report
+# test, spirv-val/spirv-opt for the SPIR-V checks.
 test_pkgs=(catch2 chromium spirv-tools)
 
 case "${1:-build}" in

@@ -1,0 +1,165 @@
+#!/usr/bin/env bash
+# Proves the README's quick start on a fresh Debian 12: bootstraps a minimal root
+# (debootstrap --variant=minbase bookworm), puts a clean clone of HEAD and a copy of ../shared
+# into it and runs `make demo`, then `make test`, inside it with chroot. Prints each step's
+# wall time and exit code. Run as root: scripts/fresh_machine_check.sh
+#
+# The host keeps whatever packages were installed before, so only a fresh root shows a missing
+# install step. The bootstrapped root (minbase only, nothing of the project's) is cached as a
+# tarball in $TWINPATH_FRESH_CACHE (default /var/cache/twinpath-fresh-root); delete it to
+# bootstrap again. The mirror and any proxy come from this machine's apt configuration.
+set -euo pipefail
+
+suite=bookworm
+repo=$(git -C "$(dirname "$0")/.." rev-parse --show-toplevel)
+cache_dir=${TWINPATH_FRESH_CACHE:-/var/cache/twinpath-fresh-root}
+
+die() { echo "fresh-machine-check: $*" >&2; exit 2; }
+say() { echo "fresh-machine-check: $*"; }
+
+[[ $(id -u) -eq 0 ]] || die "must run as root (debootstrap, mount and chroot need it)"
+[[ -d $repo/../shared ]] || die "no ../shared beside $repo (the tests read its meshes)"
+shared=$(cd "$repo/../shared" && pwd)
+head=$(git -C "$repo" rev-parse HEAD)
+git -C "$repo" diff --quiet HEAD ||
+  say "warning: uncommitted changes in $repo are not checked (only commit $head is)"
+arch=$(dpkg --print-architecture)
+cache=$cache_dir/$suite-$arch-minbase.tar
+
+# This machine's Debian repositories for the suite and its updates/security suites, as apt
+# resolved them, one "URI SUITE COMPONENT" line each; the first is the main archive.
+repos=$(apt-get indextargets --format '$(REPO_URI) $(RELEASE) $(COMPONENT)' \
+  "Created-By: Packages" | sort -u | awk -v s="$suite" '$2 == s || index($2, s "-") == 1')
+mirror=$(awk -v s="$suite" '$2 == s { print $1; exit }' <<<"$repos")
+[[ -n $mirror ]] || die "this machine's apt sources have no '$suite' repository to bootstrap from"
+# Proxy and validity settings of this machine's apt, for the root's apt and for debootstrap.
+apt_conf=$(apt-config dump | grep -E '^Acquire::(https?|ftp)::Proxy|^Acquire::Check-(Valid-Until|Date)' || true)
+proxy=$(apt-config dump --format '%v' Acquire::http::Proxy 2>/dev/null || true)
+if [[ -n $proxy && -z ${http_proxy:-} ]]; then export http_proxy=$proxy; fi
+
+work=$(mktemp -d /var/tmp/twinpath-fresh.XXXXXX)
+root=$work/root
+mounts=(proc sys dev dev/pts dev/shm)
+
+# Processes still running inside the root (a hung test, a daemon a package started) keep its
+# mounts busy.
+kill_root_processes() {
+  local pid link
+  for pid in /proc/[0-9]*; do
+    link=$(readlink "$pid/root" 2>/dev/null) || continue
+    [[ $link == "$root" || $link == "$root"/* ]] && kill -9 "${pid#/proc/}" 2>/dev/null || true
+  done
+}
+
+# Runs on every exit (success, failure, SIGINT, SIGTERM): unmounts in reverse order and removes
+# the root only when nothing is mounted under it any more (rm would otherwise reach the host's
+# /dev).
+cleanup() {
+  local rc=$? i m
+  trap - EXIT INT TERM
+  kill_root_processes
+  for ((i = ${#mounts[@]} - 1; i >= 0; i--)); do
+    m=$root/${mounts[i]}
+    if mountpoint -q "$m"; then umount "$m" || umount -l "$m" || true; fi
+  done
+  if findmnt -rn -o TARGET | grep -q "^$root/"; then
+    echo "fresh-machine-check: still mounted, left $work in place:" >&2
+    findmnt -rn -o TARGET | grep "^$root/" >&2
+    rc=3
+  else
+    rm -rf --one-file-system "$work"
+  fi
+  exit "$rc"
+}
+trap cleanup EXIT
+trap 'exit 130' INT
+trap 'exit 143' TERM
+trap 'echo "fresh-machine-check: failed at line $LINENO: $BASH_COMMAND" >&2' ERR
+
+summary=()
+# The step table, then ctest's closing lines (its verdict and any failed tests) last, where CI
+# reads them.
+print_summary() {
+  printf '%s\n' "${summary[@]}"
+  [[ ! -f $work/make-test.log ]] || sed -n '/tests passed, /,$p' "$work/make-test.log"
+}
+
+# step NAME CMD...: runs CMD in the background (so that a signal interrupts the wait), prints
+# its wall time and exit code, and stops the check when it fails.
+step() {
+  local name=$1 start rc=0
+  shift
+  say "== $name =="
+  start=$(date +%s)
+  "$@" &
+  wait $! || rc=$?
+  summary+=("$(printf '%-28s %5d s  exit %d' "$name" $(($(date +%s) - start)) "$rc")")
+  say "$name: $(($(date +%s) - start)) s, exit $rc"
+  if [[ $rc -ne 0 ]]; then
+    print_summary
+    die "$name failed (exit $rc)"
+  fi
+}
+
+in_root() {
+  chroot "$root" /usr/bin/env -i HOME=/root LANG=C.UTF-8 TERM=dumb CI="${CI:-}" \
+    PATH=/usr/local/sbin:/usr/local/bin:/usr/sbin:/usr/bin:/sbin:/bin \
+    ${http_proxy:+http_proxy="$http_proxy"} ${https_proxy:+https_proxy="$https_proxy"} "$@"
+}
+
+bootstrap() {
+  command -v debootstrap >/dev/null || {
+    apt-get update -qq && DEBIAN_FRONTEND=noninteractive apt-get install -y -qq debootstrap
+  }
+  debootstrap --variant=minbase "$suite" "$root" "$mirror"
+  # Cached before anything else goes in: the tarball holds the minbase system only.
+  mkdir -p "$cache_dir"
+  tar -C "$root" --numeric-owner -cf "$cache.part" .
+  mv "$cache.part" "$cache"
+}
+
+restore() {
+  mkdir "$root"
+  tar -C "$root" --numeric-owner -xpf "$cache"
+}
+
+# This machine's repositories, proxy and DNS, so that the root's apt reaches the same mirror.
+configure_root() {
+  rm -f "$root/etc/apt/sources.list"
+  awk '{ print "deb " $1 " " $2 " " $3 }' <<<"$repos" >"$root/etc/apt/sources.list"
+  printf '%s\n' "$apt_conf" >"$root/etc/apt/apt.conf.d/99fresh-machine-check"
+  cp -L /etc/resolv.conf "$root/etc/resolv.conf"
+  # No package may start a daemon inside the root: it would outlive the check and keep the
+  # mounts busy (the usual policy-rc.d of chroots and containers).
+  printf '#!/bin/sh\nexit 101\n' >"$root/usr/sbin/policy-rc.d"
+  chmod 755 "$root/usr/sbin/policy-rc.d"
+  mkdir -p "$root/work"
+  git clone -q --no-checkout "$repo" "$root/work/twinpath"
+  git -C "$root/work/twinpath" checkout -q --detach "$head"
+  cp -a "$shared" "$root/work/shared"
+  mount -t proc proc "$root/proc"
+  mount -t sysfs sysfs "$root/sys"
+  mount --bind /dev "$root/dev"
+  mount --bind /dev/pts "$root/dev/pts"
+  # Chromium (the report test) needs shared memory; the bind of /dev does not carry /dev/shm.
+  mount -t tmpfs -o mode=1777,size=2g tmpfs "$root/dev/shm"
+}
+
+# make test, its output also kept (pipefail is on) for print_summary.
+run_tests() { in_root make -C /work/twinpath test 2>&1 | tee "$work/make-test.log"; }
+
+say "commit $head, mirror $mirror, root $root"
+if [[ -f $cache ]]; then
+  step "restore minbase root" restore
+else
+  step "debootstrap minbase" bootstrap
+fi
+configure_root
+# The quick start assumes make (README); everything else make demo and make test install.
+step "install make" in_root sh -c 'apt-get update -qq &&
+  DEBIAN_FRONTEND=noninteractive apt-get install -y -qq --no-install-recommends make >/dev/null'
+step "make demo" in_root make -C /work/twinpath demo
+step "make test" run_tests
+
+say "all steps passed:"
+print_summary
