@@ -11,8 +11,9 @@ build_pkgs=(
   libembree-dev libtbb-dev libglm-dev libboost-dev libpng-dev
   libvulkan-dev glslang-tools mesa-vulkan-drivers vulkan-validationlayers
   libopenimageio-dev libopenexr-dev
-  # OpenImageIO's CMake package (OpenImageIOTargets.cmake) checks that its tools exist.
-  openimageio-tools
+  # CMake packages that check that every file they list exists: OpenImageIO's lists its
+  # tools (an error), Imath's (through OpenEXR) its Python module (a warning).
+  openimageio-tools python3-imath
   nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libfmt-dev
   embree-tools
   # scripts/demo.sh reads `twinpath info --json` with python3.
@@ -42,7 +43,13 @@ if [[ $(id -u) -ne 0 ]]; then
   echo "  sudo apt-get update && sudo $line" >&2
   exit 1
 fi
-echo "twinpath: installing ${missing[*]}" >&2
+echo "twinpath: installing ${missing[*]} and their dependencies" >&2
 export DEBIAN_FRONTEND=noninteractive
 apt-get update -qq
-apt-get install -y -qq --no-install-recommends "${missing[@]}" >/dev/null
+# A fresh machine installs some 500 packages: show apt's totals, then a count every 50 rather
+# than a line per package (errors still come through on stderr; pipefail keeps apt's status).
+apt-get install -y -q --no-install-recommends "${missing[@]}" | awk '
+  /newly installed|^Need to get|^After this operation/ { print "twinpath:   " $0; fflush() }
+  /^Get:/ && ++got % 50 == 0 { print "twinpath:   downloaded " got " packages"; fflush() }
+  /^Setting up / && ++set % 50 == 0 { print "twinpath:   set up " set " packages"; fflush() }
+  END { print "twinpath:   installed: " set + 0 " packages set up" }' >&2
