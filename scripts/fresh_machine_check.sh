@@ -19,7 +19,8 @@ say() { echo "fresh-machine-check: $*"; }
 
 [[ $(id -u) -eq 0 ]] || die "must run as root (debootstrap, mount and chroot need it)"
 [[ -d $repo/../shared ]] || die "no ../shared beside $repo (the tests read its meshes)"
-shared=$(cd "$repo/../shared" && pwd)
+# The physical path: ../shared may be a symbolic link, and the root needs its contents.
+shared=$(cd "$repo/../shared" && pwd -P)
 head=$(git -C "$repo" rev-parse HEAD)
 git -C "$repo" diff --quiet HEAD ||
   say "warning: uncommitted changes in $repo are not checked (only commit $head is)"
@@ -136,7 +137,8 @@ configure_root() {
   mkdir -p "$root/work"
   git clone -q --no-checkout "$repo" "$root/work/twinpath"
   git -C "$root/work/twinpath" checkout -q --detach "$head"
-  cp -a "$shared" "$root/work/shared"
+  mkdir "$root/work/shared"
+  cp -a "$shared/." "$root/work/shared/"
   mount -t proc proc "$root/proc"
   mount -t sysfs sysfs "$root/sys"
   mount --bind /dev "$root/dev"
