@@ -43,12 +43,20 @@ root=$work/root
 mounts=(proc sys dev dev/pts dev/shm)
 
 # Processes still running inside the root (a hung test, a daemon a package started) keep its
-# mounts busy.
+# mounts busy. SIGKILL is asynchronous: repeat until none is left (10 s at most).
 kill_root_processes() {
-  local pid link
-  for pid in /proc/[0-9]*; do
-    link=$(readlink "$pid/root" 2>/dev/null) || continue
-    [[ $link == "$root" || $link == "$root"/* ]] && kill -9 "${pid#/proc/}" 2>/dev/null || true
+  local pid link try found
+  for ((try = 0; try < 20; try++)); do
+    found=0
+    for pid in /proc/[0-9]*; do
+      link=$(readlink "$pid/root" 2>/dev/null) || continue
+      if [[ $link == "$root" || $link == "$root"/* ]]; then
+        found=1
+        kill -9 "${pid#/proc/}" 2>/dev/null || true
+      fi
+    done
+    ((found)) || return 0
+    sleep 0.5
   done
 }
 
