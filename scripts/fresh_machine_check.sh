@@ -29,6 +29,7 @@ cache=$cache_dir/$suite-$arch-minbase.tar
 
 # This machine's Debian repositories for the suite and its updates/security suites, as apt
 # resolved them, one "URI SUITE COMPONENT" line each; the first is the main archive.
+# shellcheck disable=SC2016 # $(...) are apt's format fields, not shell.
 repos=$(apt-get indextargets --format '$(REPO_URI) $(RELEASE) $(COMPONENT)' \
   "Created-By: Packages" | sort -u | awk -v s="$suite" '$2 == s || index($2, s "-") == 1')
 mirror=$(awk -v s="$suite" '$2 == s { print $1; exit }' <<<"$repos")
@@ -61,8 +62,8 @@ kill_root_processes() {
 }
 
 # Runs on every exit (success, failure, SIGINT, SIGTERM): unmounts in reverse order and removes
-# the root only when nothing is mounted under it any more (rm would otherwise reach the host's
-# /dev).
+# the root only when nothing is mounted under it any more (rm stays on the root's file system
+# besides).
 cleanup() {
   local rc=$? i m
   trap - EXIT INT TERM
@@ -149,10 +150,27 @@ configure_root() {
   cp -a "$shared/." "$root/work/shared/"
   mount -t proc proc "$root/proc"
   mount -t sysfs sysfs "$root/sys"
-  mount --bind /dev "$root/dev"
-  mount --bind /dev/pts "$root/dev/pts"
-  # Chromium (the report test) needs shared memory; the bind of /dev does not carry /dev/shm.
-  mount -t tmpfs -o mode=1777,size=2g tmpfs "$root/dev/shm"
+  mount_dev
+}
+
+# The root gets a /dev of its own (a tmpfs with the usual nodes, a private devpts instance and
+# shared memory for Chromium) rather than a bind of the host's: nothing a package script or a
+# killed dpkg does inside the root can then replace or delete the host's device nodes.
+mount_dev() {
+  local node name major minor
+  mount -t tmpfs -o mode=755,size=16m,nosuid tmpfs "$root/dev"
+  for node in "null 1 3" "zero 1 5" "full 1 7" "random 1 8" "urandom 1 9" "tty 5 0"; do
+    read -r name major minor <<<"$node"
+    mknod -m 666 "$root/dev/$name" c "$major" "$minor"
+  done
+  ln -s /proc/self/fd "$root/dev/fd"
+  ln -s /proc/self/fd/0 "$root/dev/stdin"
+  ln -s /proc/self/fd/1 "$root/dev/stdout"
+  ln -s /proc/self/fd/2 "$root/dev/stderr"
+  mkdir "$root/dev/pts" "$root/dev/shm"
+  mount -t devpts -o newinstance,ptmxmode=0666,mode=620 devpts "$root/dev/pts"
+  ln -s pts/ptmx "$root/dev/ptmx"
+  mount -t tmpfs -o mode=1777,size=2g,nosuid,nodev tmpfs "$root/dev/shm"
 }
 
 # make test, its output also kept (pipefail is on) for print_summary.
