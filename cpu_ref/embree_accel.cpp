@@ -56,7 +56,7 @@ RTCScene EmbreeAccel::new_scene() const {
 }
 
 void EmbreeAccel::attach_mesh(RTCScene s, uint32_t id, const FlatScene& scene, const MeshInfo& m,
-                              const Instance* to_world, double delta) {
+                              const Instance* to_world, double camera_extent) {
     ExactMesh& exact = exact_.emplace_back();
     const vec3* p = &scene.positions[m.first_vertex];
     exact.vertices.resize(m.vertex_count);
@@ -75,7 +75,7 @@ void EmbreeAccel::attach_mesh(RTCScene s, uint32_t id, const FlatScene& scene, c
     auto* i = static_cast<uvec3*>(rtcSetNewGeometryBuffer(
         g, RTC_BUFFER_TYPE_INDEX, 0, RTC_FORMAT_UINT3, sizeof(uvec3), m.triangle_count));
     check("allocating mesh buffers");
-    exact.margin = grow_triangles(exact, delta, v);
+    exact.margin = grow_triangles(exact, exact_delta(mesh_extent(exact, camera_extent)), v);
     for (uint32_t k = 0; k < m.triangle_count; ++k) i[k] = uvec3(3 * k, 3 * k + 1, 3 * k + 2);
     rtcSetGeometryUserData(g, &exact);
     rtcSetGeometryIntersectFilterFunction(g, exact_intersect_filter);
@@ -85,19 +85,6 @@ void EmbreeAccel::attach_mesh(RTCScene s, uint32_t id, const FlatScene& scene, c
     rtcReleaseGeometry(g);
 }
 
-namespace {
-// The largest coordinate of the box, or of its image under the instance's inverse.
-double max_abs(vec3 lo, vec3 hi, const Instance* to_object) {
-    double m = 0.0;
-    for (int c = 0; c < 8; ++c) {
-        const vec3 p((c & 1) ? hi.x : lo.x, (c & 2) ? hi.y : lo.y, (c & 4) ? hi.z : lo.z);
-        const vec3 q = glm::abs(to_object ? instance_point_to_object(*to_object, p) : p);
-        m = std::max(m, double(glm::max(q.x, glm::max(q.y, q.z))));
-    }
-    return m;
-}
-} // namespace
-
 EmbreeAccel::EmbreeAccel(const FlatScene& scene) {
     device_ = rtcNewDevice(nullptr);
     if (!device_)
@@ -105,12 +92,9 @@ EmbreeAccel::EmbreeAccel(const FlatScene& scene) {
                       embree_error_name(rtcGetDeviceError(nullptr)));
     rtcSetDeviceMemoryMonitorFunction(device_, &EmbreeAccel::monitor, this);
 
-    // Every ray starts at the camera (the world's origin) or on a surface: within the scene's
-    // box grown to hold the origin, or that box's image in an instanced mesh's object space.
-    const vec3 lo = glm::min(scene.bounds_min, vec3(0.0f)),
-               hi = glm::max(scene.bounds_max, vec3(0.0f));
-    const double world_delta = exact_delta(max_abs(lo, hi, nullptr));
-
+    // Each mesh grows by the delta of its own neighbourhood (exact_triangles.h, mesh_extent): the
+    // camera is the world's origin, so a world-space mesh needs only its vertices; an instanced
+    // mesh adds the eye's image in object space, to_object(0), for each of its instances.
     // A mesh that one instance uses goes into the top-level scene as world-space triangles: a
     // one-level BVH saves the instance transform and a second traversal per ray (BENCHMARKS.md,
     // local-peer). A mesh that several instances share is built once and instanced.
@@ -118,11 +102,15 @@ EmbreeAccel::EmbreeAccel(const FlatScene& scene) {
     meshes_.assign(scene.meshes.size(), nullptr);
     for (uint32_t k = 0; k < scene.meshes.size(); ++k) {
         if (uses[k] < 2) continue;
-        double extent = 0.0;
+        double camera_extent = 0.0;
         for (const Instance& inst : scene.instances)
-            if (inst.mesh == k) extent = std::max(extent, max_abs(lo, hi, &inst));
+            if (inst.mesh == k) {
+                const vec3 eye = glm::abs(instance_point_to_object(inst, vec3(0.0f)));
+                camera_extent =
+                    std::max(camera_extent, double(glm::max(eye.x, glm::max(eye.y, eye.z))));
+            }
         RTCScene s = new_scene();
-        attach_mesh(s, 0, scene, scene.meshes[k], nullptr, exact_delta(extent));
+        attach_mesh(s, 0, scene, scene.meshes[k], nullptr, camera_extent);
         rtcCommitScene(s);
         check("building a mesh BVH");
         meshes_[k] = s;
@@ -132,7 +120,7 @@ EmbreeAccel::EmbreeAccel(const FlatScene& scene) {
     for (uint32_t k = 0; k < scene.instances.size(); ++k) {
         const Instance& inst = scene.instances[k];
         if (!meshes_[inst.mesh]) {
-            attach_mesh(top_, k, scene, scene.meshes[inst.mesh], &inst, world_delta);
+            attach_mesh(top_, k, scene, scene.meshes[inst.mesh], &inst, 0.0);
             continue;
         }
         RTCGeometry g = rtcNewGeometry(device_, RTC_GEOMETRY_TYPE_INSTANCE);

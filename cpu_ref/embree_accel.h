@@ -48,9 +48,9 @@ class EmbreeAccel {
     static bool monitor(void* self, ssize_t bytes, bool post);
     RTCScene new_scene() const;
     // Adds mesh m to s as geometry `id`, in object space, or in world space when to_world is set,
-    // grown by delta (exact_triangles.h).
+    // grown by the delta of its vertices and the camera_extent (exact_triangles.h, mesh_extent).
     void attach_mesh(RTCScene s, uint32_t id, const FlatScene& scene, const MeshInfo& m,
-                     const Instance* to_world, double delta);
+                     const Instance* to_world, double camera_extent);
     void check(const char* what) const;
 };
 

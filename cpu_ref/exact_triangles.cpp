@@ -17,9 +17,12 @@ constexpr double kMaxMitre = 1024.0; // corner growth in units of delta
 // |Ng| exceeds 2 delta times the mesh's longest grown edge for every i, the candidate is more than
 // 2 delta inside every grown edge, so more than delta inside the exact triangle: far beyond
 // Embree's rounding (delta / 6) and intersect_triangle's, which would accept it too.
+// In double: |Ng|^2 is quartic in the coordinates and overflows float from edges of 2^32 on.
 bool margin_accepts(const ExactMesh& mesh, float u, float v, vec3 ng) {
-    const float lambda = glm::min(glm::min(u, v), 1.0f - u - v);
-    return lambda > 0.0f && lambda * lambda * glm::dot(ng, ng) > mesh.margin * mesh.margin;
+    const double lambda = double(glm::min(glm::min(u, v), 1.0f - u - v));
+    const double margin = double(mesh.margin);
+    return lambda > 0.0 &&
+           lambda * lambda * glm::dot(glm::dvec3(ng), glm::dvec3(ng)) > margin * margin;
 }
 
 // The candidate i of a filter call: accepted by margin or by the exact test. Records it in the
@@ -61,6 +64,13 @@ void filter(const RTCFilterFunctionNArguments* args, bool record) {
 
 double exact_delta(double extent) {
     return std::ldexp(extent, -17);
+}
+
+double mesh_extent(const ExactMesh& mesh, double camera_extent) {
+    double m = camera_extent;
+    for (const vec3& p : mesh.vertices)
+        m = std::max(m, double(glm::max(std::abs(p.x), glm::max(std::abs(p.y), std::abs(p.z)))));
+    return m;
 }
 
 float grow_triangles(const ExactMesh& mesh, double delta, vec3* out) {

@@ -48,6 +48,14 @@ struct ExactQuery {
 // rounds its edge tests by about 10 ulps of |origin - vertex| <= 2 extent.
 double exact_delta(double extent);
 
+// The extent a mesh's delta covers: its own vertices and the camera (`camera_extent`, the largest
+// coordinate of the eye in the mesh's space), so every camera ray and every ray between two
+// points of the mesh's neighbourhood. Never the scene's whole extent: a far object would grow
+// every near triangle by 2^-17 of its distance (at 1e24 the grown triangles' normals overflow
+// float and Embree misses them all). A ray that starts farther away than that carries a
+// rounding of its own direction, 2^-24 of its length, of the order of Embree's error for it.
+double mesh_extent(const ExactMesh& mesh, double camera_extent);
+
 // The triangles grown by delta, three unshared vertices each (out: 3 per triangle); returns the
 // mesh's margin. Corners are mitred: a corner of angle theta moves by delta / sin(theta / 2),
 // at most 1024 delta (below 0.11 degrees the growth covers the corner's edges only up to that

@@ -41,6 +41,15 @@ Rendered render(const Engine& e, const FlatScene& f, uint32_t seed);
 // probability alpha; the renders are deterministic, so a test is reproducible.
 bool compare_consistent(const Rendered& a, const Rendered& b, double alpha, double& p);
 
+// Appends the render's NaN/Inf count (samples dropped by the engine, and film pixels that are
+// not finite) to the case.
+void count_nan(CaseResult& c, const Rendered& r);
+
+// `variant` against `reference`: compare's two-sample test at alpha, no NaN/Inf, and no pixel
+// black in the variant that is not black in the reference.
+void expect_consistent(CaseResult& c, const Rendered& reference, const Rendered& variant,
+                       double alpha);
+
 CaseResult make_case(const std::string& group, const std::string& name, const Engine& e,
                      const std::string& expected);
 

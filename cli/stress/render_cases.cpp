@@ -20,27 +20,6 @@ FlatScene flat(const Scene& s) {
     return flatten(s);
 }
 
-// Appends the render's NaN/Inf count (samples dropped by the engine, and film pixels that are
-// not finite) to the case.
-void count_nan(CaseResult& c, const Rendered& r) {
-    c.nan += r.r.stats.nan_samples + r.nonfinite_pixels;
-    c.checked += r.r.stats.samples;
-}
-
-// `variant` against `reference`: compare's two-sample test at alpha, no NaN/Inf, and no pixel
-// black in the variant that is not black in the reference.
-void expect_consistent(CaseResult& c, const Rendered& reference, const Rendered& variant,
-                       double alpha) {
-    count_nan(c, reference);
-    count_nan(c, variant);
-    double p = 0.0;
-    const bool same = compare_consistent(reference, variant, alpha, p);
-    c.pass = same && c.nan == 0 && variant.black_pixels <= reference.black_pixels;
-    c.measured += fmt::format("{}compare p = {:.3g} ({}), black pixels {} (reference {})",
-                              c.measured.empty() ? "" : "; ", p, same ? "consistent" : "different",
-                              variant.black_pixels, reference.black_pixels);
-}
-
 // World transform applied to a whole scene: geometry, camera and point lights. A point light's
 // intensity I arrives as I / d^2, so it is multiplied by s^2 to keep every irradiance, and with
 // it every pixel's expectation, unchanged; radiance (emitters, environment) is scale-free.

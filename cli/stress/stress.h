@@ -66,6 +66,8 @@ Size large_size();
 
 // ---- the cases (cases_*.cpp) ----------------------------------------------------------------
 std::vector<CaseResult> scale_cases(const Engine& e, const Size& s);
+// Far objects inside and beyond the float32 range rule (range_cases.cpp).
+std::vector<CaseResult> range_cases(const Engine& e, const Size& s);
 std::vector<CaseResult> dielectric_cases(const Engine& e, const Size& s);
 // Two cases of the lists, alone (their regression test runs them at full size).
 CaseResult ior1_sphere_case(const Engine& e, const Size& s);

@@ -49,11 +49,36 @@ void check_camera(const std::string& path, const CameraDesc& c, const RenderSett
     if (!(c.fov_y_degrees > 0.0f && c.fov_y_degrees < 180.0f))
         input_error("{}: camera.fov (--fov) must lie in (0, 180) degrees, got {}", path,
                     c.fov_y_degrees);
-    const vec3 d = c.target - c.eye;
-    if (glm::length(d) == 0.0f)
+    // In double: the difference of two finite floats can overflow float.
+    const glm::dvec3 d = glm::dvec3(c.target) - glm::dvec3(c.eye);
+    if (glm::length(d) == 0.0)
         input_error("{}: camera.eye and camera.target (--eye, --target) coincide", path);
-    if (glm::length(glm::cross(glm::normalize(d), c.up)) < 1e-6f)
+    if (glm::length(d) > kMaxWorldRange)
+        input_error("{}: camera.target lies {:.3g} m from camera.eye, beyond the {:.3g} m that "
+                    "float32 geometry represents (docs/scene-format.md, \"Range\")",
+                    path, glm::length(d), kMaxWorldRange);
+    if (glm::length(glm::cross(glm::normalize(d), glm::dvec3(c.up))) < 1e-6)
         input_error("{}: camera.up (--up) is zero or parallel to the viewing direction", path);
+}
+
+// The float32 range rule (docs/scene-format.md, "Range"): every object's vertices, in object
+// space and in the world relative to `origin`, within kMaxWorldRange per coordinate; the first
+// object beyond it is named.
+void check_range(const Scene& scene, const glm::dvec3& origin) {
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const Object& o = scene.objects[i];
+        double far = 0.0;
+        for (const vec3& p : scene.meshes[o.mesh].positions) {
+            const glm::dvec3 w(glm::dmat4(o.transform) * glm::dvec4(glm::dvec3(p), 1.0));
+            const glm::dvec3 m = glm::max(glm::abs(w - origin), glm::abs(glm::dvec3(p)));
+            far = std::max(far, std::max(m.x, std::max(m.y, m.z)));
+        }
+        if (!(far <= kMaxWorldRange))
+            input_error("{}: object {} ('{}') has a vertex {:.3g} m from the {}, beyond the {:.3g} "
+                        "m that float32 geometry represents (docs/scene-format.md, \"Range\")",
+                        scene.path, i, o.name, far,
+                        scene.camera.given ? "camera" : "scene's centre", kMaxWorldRange);
+    }
 }
 
 // A point of the scene in the camera-relative world (FlatScene::origin), rounded to float once:
@@ -129,8 +154,12 @@ FlatScene flatten(const Scene& input) {
         }
     CameraDesc cam = scene.camera;
     const float aspect = float(scene.settings.width) / float(std::max(scene.settings.height, 1u));
-    if (!cam.given) frame_camera(cam, vec3(lo), vec3(hi), aspect);
+    if (!cam.given) {
+        check_range(scene, 0.5 * (lo + hi));
+        frame_camera(cam, vec3(lo), vec3(hi), aspect);
+    }
     check_camera(scene.path, cam, scene.settings);
+    check_range(scene, glm::dvec3(cam.eye));
     f.origin = glm::dvec3(cam.eye);
     f.bounds_min = rebased(lo, f.origin);
     f.bounds_max = rebased(hi, f.origin);
@@ -167,7 +196,12 @@ FlatScene flatten(const Scene& input) {
     // Lights, with selection weights proportional to an estimate of emitted power; any
     // positive weights give an unbiased estimator, power makes it efficient.
     const double pi = glm::pi<double>();
-    const double radius = 0.5 * double(glm::length(f.bounds_max - f.bounds_min));
+    // An environment's or directional light's power is the flux it sends into a sphere of the
+    // scene's size: the bounding sphere, but no larger than the camera's distance to its target,
+    // so that an object far out of view cannot give those lights nearly every light sample (an
+    // object at 1e10 would leave a point light a selection probability of 1e-18).
+    const double radius = std::min(0.5 * glm::length(hi - lo),
+                                   glm::length(glm::dvec3(cam.target) - glm::dvec3(cam.eye)));
     const double disk = pi * radius * radius;
     std::vector<double> weights;
     for (Light l : scene.lights) {

@@ -22,6 +22,13 @@ struct SceneOverrides {
 
 void apply_overrides(Scene& scene, const SceneOverrides& o);
 
+// The float32 range rule (docs/scene-format.md, "Range"): no vertex farther than 2^36 m (6.9e10
+// m) from the camera in any coordinate, in the world or in its object's space. The triangle
+// test's distance (shared/intersect.h) forms (v0 - o) . ((v1 - v0) x (v2 - v0)), cubic in the
+// coordinates: with every coordinate within R, |.| <= (2 sqrt(3) R)^3 = 42 R^3, below float's
+// 2^128 up to R = 2^40.9; 2^36 leaves a factor 2^14 for the light and offset arithmetic.
+constexpr double kMaxWorldRange = 0x1p36;
+
 struct FlatScene {
     std::string name;
     RenderParams params{}; // seed is set by the renderer
@@ -64,7 +71,7 @@ struct FlatScene {
 };
 
 // Coincident faces of touching dielectrics become one interface each (dielectric_interfaces.h).
-// Throws InputError for an impossible camera or film.
+// Throws InputError for an impossible camera or film, or geometry beyond kMaxWorldRange.
 FlatScene flatten(const Scene& scene);
 
 // How many instances use each mesh: more than one is instancing (FEATURE_INSTANCING), and the

@@ -18,6 +18,12 @@ TEST_CASE("stress: scale 1e-4 to 1e5 and translation 1e5 on the CPU", "[stress]"
     require_all(scale_cases(cpu_engine(), small_size()));
 }
 
+// Regression (issue 23, item 1): far objects at 1e20 and 1e30 rendered (the Cornell box with its
+// short block at 1e30: every pixel black) where the range rule now names them.
+TEST_CASE("stress: far and huge objects on the CPU", "[stress]") {
+    require_all(range_cases(cpu_engine(), small_size()));
+}
+
 // Regression: at full size (64x64, 512 spp) both translations by 1e5 failed (p = 4.0e-4 along x,
 // 3.6e-22 along every axis) without black pixels: the float description and the float world at
 // 1e5 are multiples of 2^-7, a tenth of a pixel. Fixed by the grid of the case's scene

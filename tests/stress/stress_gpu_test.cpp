@@ -62,6 +62,10 @@ TEST_CASE("stress GPU: scale and translation in compute mode", "[stress][gpu]") 
     require_all(scale_cases(gpu(), gpu_size()));
 }
 
+TEST_CASE("stress GPU: far and huge objects in compute mode", "[stress][gpu]") {
+    require_all(range_cases(gpu(), gpu_size()));
+}
+
 TEST_CASE("stress GPU: dielectrics in compute mode", "[stress][gpu]") {
     require_all(dielectric_cases(gpu(), gpu_size()), kOpenDielectric);
 }
