@@ -1,7 +1,10 @@
 #include "arg_parse.h"
 
+#include <fmt/format.h>
+
 #include <charconv>
 #include <cmath>
+#include <limits>
 #include <vector>
 
 namespace tp {
@@ -30,6 +33,17 @@ vec3 parse_vec3(const std::string& option, const std::string& text) {
             input_error("{}: '{}' is not a finite number", option, p);
     }
     return v;
+}
+
+CLI::Validator number_in(double lo, double hi) {
+    return CLI::Validator(
+        [lo, hi](std::string& text) -> std::string {
+            double v = 0.0;
+            if (!CLI::detail::lexical_cast(text, v) || !(v >= lo && v <= hi))
+                return fmt::format("{} is not a number in [{}, {}]", text, lo, hi);
+            return {};
+        },
+        fmt::format("NUMBER in [{}, {}]", lo, hi));
 }
 
 uvec2 parse_pixel(const std::string& option, const std::string& text) {

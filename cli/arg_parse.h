@@ -4,6 +4,8 @@
 #include "shared/lang.h"
 #include "util/error.h"
 
+#include <CLI/CLI.hpp>
+
 #include <string>
 
 namespace tp {
@@ -12,5 +14,9 @@ namespace tp {
 vec3 parse_vec3(const std::string& option, const std::string& text);
 // "12,34" -> two non-negative integers.
 uvec2 parse_pixel(const std::string& option, const std::string& text);
+
+// A CLI11 check for a real-valued option: a number in [lo, hi], which NaN is not (CLI::Range
+// and CLI::NonNegativeNumber compare with < and >, and let NaN through).
+CLI::Validator number_in(double lo, double hi);
 
 } // namespace tp

@@ -1,7 +1,9 @@
 // twinpath compare A.exr B.exr: do two renderings estimate the same image? (docs/compare.md)
 // Also --exact (deterministic layers, bit for bit) and --convergence (error against spp).
 // Exit codes: 0 consistent, 1 different (or biased), 2 bad input.
+#include "arg_parse.h"
 #include "commands.h"
+#include "output_paths.h"
 
 #include "compare/compare.h"
 #include "compare/convergence.h"
@@ -16,7 +18,9 @@
 
 #include <array>
 #include <filesystem>
+#include <limits>
 #include <memory>
+#include <optional>
 
 namespace tp {
 namespace {
@@ -24,15 +28,30 @@ namespace {
 struct CompareArgs {
     std::vector<std::string> files;
     double alpha = 0.01;
-    std::string json, report, reference;
+    std::optional<std::string> json, report; // given (perhaps as "") or not
+    std::string reference;
     bool exact = false, convergence = false;
     double tolerance = 0.0;
     int tile = kDefaultTile;
     double floor = kDefaultRelativeFloor;
 };
 
-void write_json(const std::string& path, const nlohmann::json& j) {
-    if (!path.empty()) write_text_file(path, j.dump(2) + "\n");
+void write_json(const std::optional<std::string>& path, const nlohmann::json& j) {
+    if (path) write_text_file(*path, j.dump(2) + "\n");
+}
+
+// Runs `write` to fill the report directory; where it fails, the directory goes too if this
+// call created it, so a failed report leaves nothing behind.
+template <typename Write>
+void write_report_dir(const std::string& dir, Write&& write) {
+    std::error_code ec;
+    const bool existed = std::filesystem::exists(dir, ec);
+    try {
+        write();
+    } catch (...) {
+        if (!existed) std::filesystem::remove_all(dir, ec);
+        throw;
+    }
 }
 
 int run_exact(const CompareArgs& a) {
@@ -40,16 +59,18 @@ int run_exact(const CompareArgs& a) {
     const ExactResult r = exact_compare(a.files[0], read_exr(a.files[0]), a.files[1],
                                         read_exr(a.files[1]), a.tolerance);
     write_json(a.json, exact_json(r));
-    if (!a.report.empty()) {
+    if (a.report) {
         // The mismatches as a picture: black equal, yellow on a silhouette, red elsewhere.
-        std::filesystem::create_directories(a.report);
         std::vector<uint8_t> rgb;
         for (uint8_t m : r.mask)
             for (uint8_t v : m == 2   ? std::array<uint8_t, 3>{255, 0, 0}
                              : m == 1 ? std::array<uint8_t, 3>{255, 220, 0}
                                       : std::array<uint8_t, 3>{0, 0, 0})
                 rgb.push_back(v);
-        write_png(a.report + "/exact_mismatches.png", r.width, r.height, rgb);
+        write_report_dir(*a.report, [&] {
+            std::filesystem::create_directories(*a.report);
+            write_png(*a.report + "/exact_mismatches.png", r.width, r.height, rgb);
+        });
     }
     fmt::print("{}\n", exact_verdict_line(r));
     return r.identical() ? 0 : 1;
@@ -79,12 +100,16 @@ int run_statistical(const CompareArgs& a) {
     const CompareResult r = compare_images(img_a, img_b, opt);
     for (const std::string& w : r.warnings) fmt::print(stderr, "twinpath: warning: {}\n", w);
     write_json(a.json, compare_json(r, img_a, img_b));
-    if (!a.report.empty()) write_report(a.report, r, img_a, img_b);
+    if (a.report) write_report_dir(*a.report, [&] { write_report(*a.report, r, img_a, img_b); });
     fmt::print("{}\n", compare_verdict_line(r));
     return r.different ? 1 : 0;
 }
 
 int run_compare(const CompareArgs& a) {
+    // Checked first: the JSON below reports every later bad input. The report is a directory
+    // that write_report creates, so only its name is checked.
+    if (a.json) check_output_paths({{"--json", *a.json}});
+    if (a.report && a.report->empty()) input_error("--report: the path is empty");
     try {
         if (!(a.alpha > 0.0 && a.alpha < 1.0))
             input_error("--alpha must lie strictly between 0 and 1, got {}", a.alpha);
@@ -112,7 +137,7 @@ Subcommand add_compare_command(CLI::App& app) {
     CLI::Option* exact =
         c->add_flag("--exact", a->exact, "Pixel-by-pixel equality of all common channels");
     c->add_option("--tolerance", a->tolerance, "--exact: largest |a - b| counted as equal")
-        ->check(CLI::NonNegativeNumber)
+        ->check(number_in(0.0, std::numeric_limits<double>::max()))
         ->needs(exact);
     CLI::Option* conv = c->add_flag("--convergence", a->convergence,
                                     "Fit error against spp over the images, vs --reference")
@@ -122,7 +147,7 @@ Subcommand add_compare_command(CLI::App& app) {
         ->check(CLI::Range(1, 4096));
     c->add_option("--floor", a->floor,
                   "Relative floor of the difference's standard deviation (default 1e-4)")
-        ->check(CLI::Range(0.0, 1.0));
+        ->check(number_in(0.0, 1.0));
     return {c, [a] { return run_compare(*a); }};
 }
 

@@ -1,6 +1,7 @@
 // twinpath pathdiff A.json B.json: the first vertex and field where two path logs diverge
 // (compare/pathdiff.h, docs/debugging.md). Exit codes: 0 identical within tolerance, 1 they
 // diverge, 2 bad input.
+#include "arg_parse.h"
 #include "commands.h"
 
 #include "compare/pathdiff.h"
@@ -8,6 +9,7 @@
 
 #include <fmt/core.h>
 
+#include <limits>
 #include <memory>
 
 namespace tp {
@@ -36,13 +38,13 @@ Subcommand add_pathdiff_command(CLI::App& app) {
     c->add_option("logs", a->files, "A.json B.json")->required();
     c->add_option("--geometry-tolerance", a->tol.geometry,
                   "Positions and distances: relative to max(1, |value|) (default 1e-4)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(number_in(0.0, std::numeric_limits<double>::max()));
     c->add_option("--direction-tolerance", a->tol.direction,
                   "Directions, normals, barycentrics: absolute (default 1e-3)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(number_in(0.0, std::numeric_limits<double>::max()));
     c->add_option("--radiometric-tolerance", a->tol.radiometric,
                   "pdfs, BRDF values, weights, radiance: relative (default 1e-2)")
-        ->check(CLI::NonNegativeNumber);
+        ->check(number_in(0.0, std::numeric_limits<double>::max()));
     return {c, [a] { return run_pathdiff(*a); }};
 }
 

@@ -1,6 +1,7 @@
 // twinpath render SCENE: load, render on the chosen backend, write EXR (+ PNG, stats).
 #include "arg_parse.h"
 #include "commands.h"
+#include "output_paths.h"
 #include "progress.h"
 
 #include "compare/colormap.h"
@@ -13,8 +14,6 @@
 
 #include <fmt/core.h>
 
-#include <unistd.h>
-
 #include <algorithm>
 #include <cmath>
 #include <filesystem>
@@ -25,7 +24,7 @@ namespace {
 
 struct RenderArgs {
     std::string scene;
-    std::string output;
+    std::optional<std::string> output; // each output: given (perhaps as "") or not
     std::string backend = "cpu";
     std::string vk_mode = "auto";
     std::optional<uint32_t> spp, width, height, min_depth, max_depth;
@@ -35,11 +34,12 @@ struct RenderArgs {
     std::string device;
     std::string eye, target, up;
     std::optional<float> fov;
-    std::string stats, png;
-    std::string pipeline_stats;     // --pipeline-stats FILE (docs/gpu.md)
-    std::string features = "scene"; // --features: scene (specialized) or all
+    std::optional<std::string> stats, png;
+    std::optional<std::string> pipeline_stats; // --pipeline-stats FILE (docs/gpu.md)
+    std::string features = "scene";            // --features: scene (specialized) or all
     // Debugging (docs/debugging.md).
-    std::string aov, debug_pixel, debug_log, integrator = "path";
+    std::string aov, debug_pixel, integrator = "path";
+    std::optional<std::string> debug_log;
     std::optional<uint32_t> debug_sample;
 };
 
@@ -88,23 +88,6 @@ ExrImage render_image(const RenderResult& r) {
     return img;
 }
 
-// An output file can be written when its directory exists and is writable and the path is not
-// a directory or a read-only file. Checked for every output before rendering, so that a bad
-// path fails at once (exit 2) and leaves no file behind instead of failing after the render.
-void check_output_path(const std::string& path, const char* option) {
-    namespace fs = std::filesystem;
-    const fs::path p(path);
-    const fs::path dir = p.parent_path().empty() ? fs::path(".") : p.parent_path();
-    std::error_code ec;
-    if (!fs::is_directory(dir, ec))
-        input_error("{} {}: the directory {} does not exist", option, path, dir.string());
-    if (fs::is_directory(p, ec)) input_error("{} {}: is a directory", option, path);
-    if (access(dir.c_str(), W_OK) != 0)
-        input_error("{} {}: the directory {} is not writable", option, path, dir.string());
-    if (fs::exists(p, ec) && access(p.c_str(), W_OK) != 0)
-        input_error("{} {}: the file is not writable", option, path);
-}
-
 int run_render(const RenderArgs& a) {
     std::vector<std::string> warnings;
     Scene scene = load_scene(a.scene, warnings);
@@ -127,7 +110,7 @@ int run_render(const RenderArgs& a) {
     DebugRequest debug;
     debug.integrator = integrator_from_name(a.integrator);
     debug.aov = parse_aov(a.aov);
-    debug.log = !a.debug_log.empty();
+    debug.log = a.debug_log.has_value();
     debug.sample = a.debug_sample;
     if (debug.log != !a.debug_pixel.empty())
         input_error("--debug-log and --debug-pixel go together (the log of which pixel?)");
@@ -148,17 +131,18 @@ int run_render(const RenderArgs& a) {
     }
 
     const std::string out =
-        !a.output.empty() ? a.output : std::filesystem::path(scene.path).stem().string() + ".exr";
-    check_output_path(out, "-o");
-    if (!a.png.empty()) check_output_path(a.png, "--png");
-    if (!a.stats.empty()) check_output_path(a.stats, "--stats");
-    if (!a.pipeline_stats.empty()) {
+        a.output ? *a.output : std::filesystem::path(scene.path).stem().string() + ".exr";
+    std::vector<std::pair<std::string, std::string>> outputs = {{"-o", out}};
+    if (a.png) outputs.emplace_back("--png", *a.png);
+    if (a.stats) outputs.emplace_back("--stats", *a.stats);
+    if (a.pipeline_stats) {
         if (a.backend != "vulkan")
             input_error("--pipeline-stats reports the Vulkan driver's pipelines: use --backend "
                         "vulkan");
-        check_output_path(a.pipeline_stats, "--pipeline-stats");
+        outputs.emplace_back("--pipeline-stats", *a.pipeline_stats);
     }
-    if (debug.log) check_output_path(a.debug_log, "--debug-log");
+    if (debug.log) outputs.emplace_back("--debug-log", *a.debug_log);
+    check_output_paths(outputs);
 
     ProgressBar bar(fmt::format("render {}", a.backend));
     RenderOptions opt;
@@ -176,7 +160,7 @@ int run_render(const RenderArgs& a) {
         VulkanOptions vk;
         vk.device = a.device;
         vk.mode = a.vk_mode;
-        vk.pipeline_statistics = !a.pipeline_stats.empty();
+        vk.pipeline_statistics = a.pipeline_stats.has_value();
         result = render_vulkan(flat, opt, vk);
     }
     result.stats.scene = scene.path;
@@ -186,9 +170,9 @@ int run_render(const RenderArgs& a) {
         image.strings["twinpath:integrator"] = integrator_name(debug.integrator);
     if (debug.aov) add_aov_layers(image, result.debug.aovs);
     write_exr(out, image);
-    if (!a.png.empty()) {
+    if (a.png) {
         const ExrImage img = result.film.to_exr();
-        write_png(a.png, img.width, img.height,
+        write_png(*a.png, img.width, img.height,
                   debug.integrator == INTEGRATOR_COST
                       ? heat_map(img.channel("B"))
                       : tonemap_srgb8(img.channel("R"), img.channel("G"), img.channel("B"), 0.0f));
@@ -209,14 +193,14 @@ int run_render(const RenderArgs& a) {
         info.pixel_y = debug.pixel_y;
         info.dropped = result.debug.dropped;
         info.origin = flat.origin;
-        write_path_log(a.debug_log, info, result.debug.records);
+        write_path_log(*a.debug_log, info, result.debug.records);
         if (result.debug.dropped)
             fmt::print(stderr,
                        "twinpath: warning: {} path-log records did not fit and were dropped\n",
                        result.debug.dropped);
     }
-    if (!a.stats.empty()) write_stats_json(a.stats, result.stats);
-    if (!a.pipeline_stats.empty()) write_pipeline_stats_json(a.pipeline_stats, result.stats);
+    if (a.stats) write_stats_json(*a.stats, result.stats);
+    if (a.pipeline_stats) write_pipeline_stats_json(*a.pipeline_stats, result.stats);
     const RenderStats& s = result.stats;
     fmt::print("{}: {}x{} {} spp on {} in {:.2f} s ({:.2f} Mrays/s), {} NaN/Inf samples -> {}\n",
                scene.path, s.width, s.height, s.spp, s.device, s.wall_time_s,
@@ -238,7 +222,7 @@ Subcommand add_render_command(CLI::App& app) {
         ->check(CLI::IsMember({"auto", "compute", "pipeline"}));
     c->add_option("--spp", a->spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 30));
     c->add_option("--time-limit", a->time_limit, "Stop after this many seconds (whole passes)")
-        ->check(CLI::Range(0.0, 1e9));
+        ->check(number_in(0.0, 1e9));
     c->add_option("--seed", a->seed, "Random seed");
     c->add_option("--width", a->width, "Image width")->check(CLI::Range(1u, 16384u));
     c->add_option("--height", a->height, "Image height")->check(CLI::Range(1u, 16384u));
@@ -252,7 +236,7 @@ Subcommand add_render_command(CLI::App& app) {
     c->add_option("--target", a->target, "Camera target X,Y,Z");
     c->add_option("--up", a->up, "Camera up vector X,Y,Z");
     c->add_option("--fov", a->fov, "Vertical field of view in degrees")
-        ->check(CLI::Range(1e-3f, 179.0f));
+        ->check(number_in(1e-3, 179.0));
     c->add_option("--stats", a->stats, "Write render statistics as JSON");
     c->add_option("--png", a->png, "Write a tone-mapped sRGB PNG preview");
     c->add_option("--pipeline-stats", a->pipeline_stats,

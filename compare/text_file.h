@@ -1,5 +1,5 @@
-// Writes a whole text file through a temporary name and a rename, like the image writers, so
-// that a failure never leaves a partial file. Throws RuntimeError naming the file.
+// Writes a whole text file through write_output_file (util/output_file.h), like the image
+// writers: no partial file, a device written in place. Throws RuntimeError naming the file.
 #pragma once
 
 #include <string>

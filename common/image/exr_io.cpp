@@ -1,6 +1,7 @@
 #include "image/exr_io.h"
 
 #include "util/error.h"
+#include "util/output_file.h"
 
 #include <OpenEXR/ImfChannelList.h>
 #include <OpenEXR/ImfDoubleAttribute.h>
@@ -10,6 +11,7 @@
 #include <OpenEXR/ImfInputFile.h>
 #include <OpenEXR/ImfIntAttribute.h>
 #include <OpenEXR/ImfOutputFile.h>
+#include <OpenEXR/ImfStdIO.h>
 #include <OpenEXR/ImfStringAttribute.h>
 
 #include <cstdio>
@@ -24,7 +26,8 @@ const std::vector<float>& ExrImage::channel(const std::string& name) const {
 }
 
 void write_exr(const std::string& path, const ExrImage& image) {
-    const std::string tmp = path + ".partial";
+    // Encoded in memory, then written by write_output_file (util/output_file.h).
+    Imf::StdOSStream encoded;
     try {
         Imf::Header header(image.width, image.height);
         header.compression() = Imf::ZIP_COMPRESSION;
@@ -45,24 +48,19 @@ void write_exr(const std::string& path, const ExrImage& image) {
             if (own(k)) header.insert(k, Imf::IntAttribute(int(v)));
         for (const auto& [k, v] : image.reals)
             if (own(k)) header.insert(k, Imf::DoubleAttribute(v));
-        Imf::OutputFile file(tmp.c_str(), header);
+        Imf::OutputFile file(encoded, header);
         Imf::FrameBuffer fb;
         for (const auto& [name, data] : image.channels)
             fb.insert(name, Imf::Slice(Imf::FLOAT, (char*)data.data(), sizeof(float),
                                        sizeof(float) * size_t(image.width)));
         file.setFrameBuffer(fb);
         file.writePixels(image.height);
+    } catch (const RuntimeError&) {
+        throw;
     } catch (const std::exception& e) {
-        std::remove(tmp.c_str());
-        if (dynamic_cast<const RuntimeError*>(&e)) throw;
         runtime_error("cannot write {}: {}", path, e.what());
     }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) {
-        std::remove(tmp.c_str());
-        runtime_error("cannot write {}: {}", path, ec.message());
-    }
+    write_output_file(path, encoded.str());
 }
 
 ExrImage read_exr(const std::string& path) {

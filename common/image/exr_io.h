@@ -22,8 +22,8 @@ struct ExrImage {
     const std::vector<float>& channel(const std::string& name) const;
 };
 
-// Writes to a temporary file next to `path` and renames it, so a failed write never leaves a
-// partial image behind. Throws RuntimeError on I/O failure.
+// Writes through write_output_file (util/output_file.h): no partial image is left behind, a
+// device is written in place. Throws RuntimeError naming the file and the reason on failure.
 void write_exr(const std::string& path, const ExrImage& image);
 
 // Reads every channel as float32. Throws InputError naming the file when it is missing or

@@ -1,15 +1,12 @@
 #include "image/png_io.h"
 
 #include "util/error.h"
+#include "util/output_file.h"
 
 #include <png.h>
 
 #include <algorithm>
-#include <cerrno>
 #include <cmath>
-#include <cstdio>
-#include <cstring>
-#include <filesystem>
 #include <memory>
 
 namespace tp {
@@ -38,21 +35,25 @@ std::vector<uint8_t> tonemap_srgb8(const std::vector<float>& r, const std::vecto
     return out;
 }
 
+namespace {
+void append_bytes(png_structp png, png_bytep data, png_size_t n) {
+    static_cast<std::string*>(png_get_io_ptr(png))->append(reinterpret_cast<char*>(data), n);
+}
+void no_flush(png_structp) {}
+} // namespace
+
 void write_png(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb) {
     if (rgb.size() != size_t(width) * size_t(height) * 3)
         runtime_error("{}: {} bytes for a {}x{} RGB image", path, rgb.size(), width, height);
-    const std::string tmp = path + ".partial";
-    FILE* f = std::fopen(tmp.c_str(), "wb");
-    if (!f) runtime_error("cannot write {}: {}", path, std::strerror(errno));
+    // Encoded in memory, then written by write_output_file (util/output_file.h).
+    std::string encoded;
     png_structp png = png_create_write_struct(PNG_LIBPNG_VER_STRING, nullptr, nullptr, nullptr);
     png_infop info = png ? png_create_info_struct(png) : nullptr;
     if (!png || !info || setjmp(png_jmpbuf(png))) {
         png_destroy_write_struct(&png, &info);
-        std::fclose(f);
-        std::remove(tmp.c_str());
         runtime_error("cannot write {}: libpng failed", path);
     }
-    png_init_io(png, f);
+    png_set_write_fn(png, &encoded, append_bytes, no_flush);
     png_set_IHDR(png, info, png_uint_32(width), png_uint_32(height), 8, PNG_COLOR_TYPE_RGB,
                  PNG_INTERLACE_NONE, PNG_COMPRESSION_TYPE_DEFAULT, PNG_FILTER_TYPE_DEFAULT);
     png_set_sRGB(png, info, PNG_sRGB_INTENT_PERCEPTUAL);
@@ -60,13 +61,7 @@ void write_png(const std::string& path, int width, int height, const std::vector
     for (int y = 0; y < height; ++y) png_write_row(png, rgb.data() + size_t(y) * size_t(width) * 3);
     png_write_end(png, nullptr);
     png_destroy_write_struct(&png, &info);
-    if (std::fclose(f) != 0) {
-        std::remove(tmp.c_str());
-        runtime_error("cannot write {}: {}", path, std::strerror(errno));
-    }
-    std::error_code ec;
-    std::filesystem::rename(tmp, path, ec);
-    if (ec) runtime_error("cannot write {}: {}", path, ec.message());
+    write_output_file(path, encoded);
 }
 
 } // namespace tp

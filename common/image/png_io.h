@@ -8,8 +8,8 @@
 
 namespace tp {
 
-// rgb: width * height * 3 bytes, rows top to bottom. Written via a temporary file and a
-// rename, so a failure leaves no partial file. Throws RuntimeError.
+// rgb: width * height * 3 bytes, rows top to bottom. Written through write_output_file
+// (util/output_file.h): no partial file, a device written in place. Throws RuntimeError.
 void write_png(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb);
 
 // Linear radiance to display: multiply by 2^exposure, clamp to [0, 1], apply the sRGB transfer

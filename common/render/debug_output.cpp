@@ -1,12 +1,12 @@
 #include "render/debug_output.h"
 
 #include "util/error.h"
+#include "util/output_file.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
 #include <cmath>
-#include <fstream>
 #include <limits>
 
 namespace tp {
@@ -232,10 +232,7 @@ void write_path_log(const std::string& path, const PathLogInfo& info,
         paths.push_back({{"sample", s}, {"radiance", vec(L)}, {"vertices", std::move(vertices)}});
     }
     j["paths"] = std::move(paths);
-    std::ofstream out(path);
-    if (!out) runtime_error("cannot write {}", path);
-    out << j.dump(1) << "\n";
-    if (!out) runtime_error("cannot write {}", path);
+    write_output_file(path, j.dump(1) + "\n");
 }
 
 void add_aov_layers(ExrImage& img, const std::vector<PixelAov>& aovs) {

@@ -1,10 +1,9 @@
 #include "render/stats.h"
 
 #include "util/error.h"
+#include "util/output_file.h"
 
 #include <nlohmann/json.hpp>
-
-#include <fstream>
 
 namespace tp {
 namespace {
@@ -39,10 +38,7 @@ nlohmann::json statistic_json(const PipelineStatistic& st) {
 }
 
 void write_json(const std::string& path, const nlohmann::json& j) {
-    std::ofstream out(path);
-    if (!out) runtime_error("cannot write {}", path);
-    out << j.dump(2) << "\n";
-    if (!out) runtime_error("cannot write {}", path);
+    write_output_file(path, j.dump(2) + "\n");
 }
 
 } // namespace
