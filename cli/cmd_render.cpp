@@ -10,6 +10,7 @@
 #include "scene/flatten.h"
 #include "scene/load.h"
 #include "util/error.h"
+#include "util/interrupt.h"
 #include "vulkan_rt/vulkan_renderer.h"
 
 #include <fmt/core.h>
@@ -145,7 +146,9 @@ int run_render(const RenderArgs& a) {
     check_output_paths(outputs);
 
     ProgressBar bar(fmt::format("render {}", a.backend));
+    install_interrupt_handlers();
     RenderOptions opt;
+    opt.stop = &interrupt_flag();
     opt.seed = a.seed;
     opt.time_limit_s = a.time_limit;
     opt.threads = a.threads;
@@ -205,6 +208,11 @@ int run_render(const RenderArgs& a) {
     fmt::print("{}: {}x{} {} spp on {} in {:.2f} s ({:.2f} Mrays/s), {} NaN/Inf samples -> {}\n",
                scene.path, s.width, s.height, s.spp, s.device, s.wall_time_s,
                s.rays_per_second() * 1e-6, s.nan_samples, out);
+    if (const int code = interrupt_exit_code()) {
+        fmt::print(stderr, "twinpath: interrupted: wrote the {} of {} spp accumulated\n", s.spp,
+                   flat.spp);
+        return code;
+    }
     return 0;
 }
 

@@ -117,6 +117,7 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
             snapshot_seconds += seconds_since(t_snap);
         }
         if (options.time_limit_s > 0 && seconds_since(t0) >= options.time_limit_s) break;
+        if (options.stop_requested()) break;
     }
     st.wall_time_s = seconds_since(t0) - snapshot_seconds;
     st.spp = done;

@@ -279,8 +279,9 @@ RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
             snapshot_seconds += seconds_since(t_snap);
         }
         planner.stop_at(options.next_stop(planner.samples_done(), scene.spp));
-        if (planner.at_pass_boundary() && options.time_limit_s > 0 &&
-            seconds_since(t0) >= options.time_limit_s)
+        if (planner.at_pass_boundary() &&
+            ((options.time_limit_s > 0 && seconds_since(t0) >= options.time_limit_s) ||
+             options.stop_requested()))
             break;
     }
     st.wall_time_s = seconds_since(t0) - snapshot_seconds;
@@ -292,7 +293,7 @@ RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
     const DebugRequest& d = options.debug;
     if (d.aov) result.debug.aovs = session.aovs();
     if (d.log)
-        session.path_log(d.first_sample(), std::min(d.end_sample(scene.spp), scene.spp), d.pixel_y,
+        session.path_log(d.first_sample(), std::min(d.end_sample(st.spp), st.spp), d.pixel_y,
                          result.debug);
     return result;
 }

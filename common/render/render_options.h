@@ -6,6 +6,7 @@
 #include "render/film.h"
 #include "render/stats.h"
 
+#include <atomic>
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -21,6 +22,10 @@ struct RenderOptions {
     // `--features all`: render with the path loop that has every feature compiled in instead
     // of the one specialized to the scene's features (scene/features.h), for comparisons.
     bool all_features = false;
+    // When set and true (the first SIGINT/SIGTERM, util/interrupt.h), the render ends after the
+    // pass in flight: every pixel then has the same number of samples, reported as stats.spp.
+    const std::atomic<bool>* stop = nullptr;
+    bool stop_requested() const { return stop && stop->load(); }
     // Called after every pass with the fraction of samples done; may be empty.
     std::function<void(double fraction)> progress;
     // Sample counts at which a snapshot is wanted: a benchmark ladder renders once and reads

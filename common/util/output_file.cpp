@@ -1,6 +1,7 @@
 #include "util/output_file.h"
 
 #include "util/error.h"
+#include "util/interrupt.h"
 
 #include <cerrno>
 #include <cstdio>
@@ -43,6 +44,7 @@ int write_all(const std::string& target, std::string_view bytes, bool create) {
 } // namespace
 
 void write_output_file(const std::string& path, std::string_view bytes) {
+    const OutputWriteScope writing; // a second SIGINT/SIGTERM waits for the end (interrupt.h)
     struct stat st {};
     if (::stat(path.c_str(), &st) == 0 && !S_ISREG(st.st_mode)) {
         if (S_ISDIR(st.st_mode)) runtime_error("cannot write {}: it is a directory", path);

@@ -1,0 +1,31 @@
+// SIGINT and SIGTERM during a render (DESIGN.md, exit codes 130 and 143; README, "Interrupting a
+// render"): the first signal asks the render to stop after the pass in flight, so that what was
+// accumulated is written as a valid image; a second signal exits at once, with 128 + its
+// number. An output being written at that moment is finished first (OutputWriteScope), so no
+// PATH.partial is ever left behind.
+#pragma once
+
+#include <atomic>
+
+namespace tp {
+
+// Installs the handlers for SIGINT and SIGTERM (once; later calls do nothing).
+void install_interrupt_handlers();
+
+// Set by the first signal; a renderer polls it between passes (RenderOptions::stop).
+const std::atomic<bool>& interrupt_flag();
+
+// 128 + the first signal's number (130 for SIGINT, 143 for SIGTERM), or 0 when none came.
+int interrupt_exit_code();
+
+// Held while an output file is written (util/output_file.h): a second signal that arrives
+// meanwhile exits when the last scope closes, after the file is whole or removed.
+class OutputWriteScope {
+  public:
+    OutputWriteScope();
+    ~OutputWriteScope();
+    OutputWriteScope(const OutputWriteScope&) = delete;
+    OutputWriteScope& operator=(const OutputWriteScope&) = delete;
+};
+
+} // namespace tp
