@@ -2,11 +2,13 @@
 // Exit codes: 0 success (compare: consistent), 1 compare found a difference, 2 bad usage or
 // bad input, 3 runtime failure (no device, out of memory, device lost).
 #include "commands.h"
+#include "scene/text_parse.h"
 #include "util/error.h"
 #include "vulkan_rt/vulkan_renderer.h"
 
 #include <fmt/core.h>
 
+#include <string>
 #include <vector>
 
 // Closes the Vulkan device that renders keep open (vulkan_renderer.h) when main returns, before
@@ -23,6 +25,21 @@ int main(int argc, char** argv) {
         tp::add_render_command(app), tp::add_compare_command(app),  tp::add_info_command(app),
         tp::add_bench_command(app),  tp::add_pathdiff_command(app),
     };
+    // CLI11 would call an unknown first word a missing subcommand: name it and list them.
+    if (argc > 1 && argv[1][0] != '-') {
+        std::string names;
+        bool known = false;
+        for (const tp::Subcommand& c : commands) {
+            names += (names.empty() ? "" : ", ") + c.app->get_name();
+            known = known || c.app->get_name() == argv[1];
+        }
+        if (!known) {
+            fmt::print(stderr,
+                       "twinpath: error: '{}' is not a subcommand; the subcommands are {}\n",
+                       tp::clip(argv[1]), names);
+            return 2;
+        }
+    }
     try {
         app.parse(argc, argv);
     } catch (const CLI::CallForHelp& e) {

@@ -7,18 +7,37 @@
 
 #include <fmt/core.h>
 
+#include <cstdlib>
 #include <cstring>
+#include <string>
 
 namespace tp {
 namespace {
 
 const char* kValidationLayer = "VK_LAYER_KHRONOS_validation";
 
+// vk_check for the loader's calls before an instance exists: the loader also answers
+// VK_ERROR_OUT_OF_HOST_MEMORY when a driver manifest (ICD JSON) cannot be parsed, far more often
+// the cause at start-up than memory, so the message says both and where the manifests are.
+void loader_check(VkResult r, const char* what) {
+    if (r != VK_ERROR_OUT_OF_HOST_MEMORY) return vk_check(r, what);
+    const char* listed = std::getenv("VK_DRIVER_FILES");
+    if (!listed || !*listed) listed = std::getenv("VK_ICD_FILENAMES");
+    const std::string where =
+        listed && *listed
+            ? fmt::format("the manifests listed in VK_DRIVER_FILES/VK_ICD_FILENAMES ({})", listed)
+            : "the manifests in /usr/share/vulkan/icd.d and /etc/vulkan/icd.d";
+    runtime_error("Vulkan call failed while {}: VK_ERROR_OUT_OF_HOST_MEMORY, which the Vulkan "
+                  "loader also reports for a malformed driver manifest: check {} "
+                  "(VK_LOADER_DEBUG=error names the file)",
+                  what, where);
+}
+
 bool layer_available(const char* name) {
     uint32_t n = 0;
-    vk_check(vkEnumerateInstanceLayerProperties(&n, nullptr), "listing instance layers");
+    loader_check(vkEnumerateInstanceLayerProperties(&n, nullptr), "listing instance layers");
     std::vector<VkLayerProperties> layers(n);
-    vk_check(vkEnumerateInstanceLayerProperties(&n, layers.data()), "listing instance layers");
+    loader_check(vkEnumerateInstanceLayerProperties(&n, layers.data()), "listing instance layers");
     for (const VkLayerProperties& l : layers)
         if (std::strcmp(l.layerName, name) == 0) return true;
     return false;
@@ -26,11 +45,11 @@ bool layer_available(const char* name) {
 
 bool instance_extension_available(const char* name) {
     uint32_t n = 0;
-    vk_check(vkEnumerateInstanceExtensionProperties(nullptr, &n, nullptr),
-             "listing instance extensions");
+    loader_check(vkEnumerateInstanceExtensionProperties(nullptr, &n, nullptr),
+                 "listing instance extensions");
     std::vector<VkExtensionProperties> exts(n);
-    vk_check(vkEnumerateInstanceExtensionProperties(nullptr, &n, exts.data()),
-             "listing instance extensions");
+    loader_check(vkEnumerateInstanceExtensionProperties(nullptr, &n, exts.data()),
+                 "listing instance extensions");
     for (const VkExtensionProperties& e : exts)
         if (std::strcmp(e.extensionName, name) == 0) return true;
     return false;
@@ -85,7 +104,7 @@ VulkanInstance::VulkanInstance() {
         // The driver's one-time set-up (Mesa lavapipe) keeps 128 bytes it never frees; they are
         // not twinpath's to free, so the debug preset's leak check leaves them out.
         const LeakCheckPause driver_setup;
-        vk_check(vkCreateInstance(&ci, nullptr, &instance_), "creating the Vulkan instance");
+        loader_check(vkCreateInstance(&ci, nullptr, &instance_), "creating the Vulkan instance");
     }
     if (validation_) messenger_.attach(instance_);
 

@@ -2,7 +2,9 @@
 
 #include "image/texture_io.h"
 #include "scene/generators.h"
+#include "scene/json_duplicate_keys.h"
 #include "scene/obj_loader.h"
+#include "shared/math.h"
 #include "util/error.h"
 
 #include <glm/gtc/matrix_transform.hpp>
@@ -65,9 +67,12 @@ class Reader {
 
     uint32_t count(const json& j, const std::string& field, uint32_t lo, uint32_t hi) const {
         if (!j.is_number_integer()) fail(field, "expected an integer");
-        const long long v = j.get<long long>();
-        if (v < lo || v > hi) fail(field, fmt::format("must lie in [{}, {}], got {}", lo, hi, v));
-        return uint32_t(v);
+        // Unsigned values above 2^63 would wrap to negative as long long.
+        const bool in_range = j.is_number_unsigned()
+                                  ? j.get<uint64_t>() >= lo && j.get<uint64_t>() <= hi
+                                  : j.get<int64_t>() >= lo && j.get<int64_t>() <= hi;
+        if (!in_range) fail(field, fmt::format("must lie in [{}, {}], got {}", lo, hi, j.dump()));
+        return uint32_t(j.get<uint64_t>());
     }
 
     vec3 vector3(const json& j, const std::string& field) const {
@@ -137,7 +142,9 @@ json parse_file(const std::string& path) {
     if (!in) input_error("{}: cannot open file", path);
     const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
     try {
-        return json::parse(text);
+        json root = json::parse(text);
+        reject_duplicate_keys(path, text);
+        return root;
     } catch (const json::parse_error& e) {
         // nlohmann's message carries "at line L, column C".
         input_error("{}: malformed JSON: {}", path, e.what());
@@ -194,9 +201,11 @@ glm::mat4 read_transform(const Reader& r, const json& j, const std::string& fiel
                 rot.is_array() ? fmt::format("{}.rotate[{}]", field, i) : field + ".rotate";
             r.keys(*list[i], f, {"axis", "degrees"});
             const vec3 axis = r.vector3(r.required(*list[i], f, "axis"), f + ".axis");
-            if (glm::length(axis) == 0.0f) r.fail(f + ".axis", "must not be zero");
+            // Normalized in double: |axis| overflows float for components beyond ~1.8e19.
+            const glm::dvec3 unit = glm::dvec3(axis) / glm::length(glm::dvec3(axis));
+            if (!is_finite3(vec3(unit))) r.fail(f + ".axis", "must not be zero");
             const float deg = r.number(r.required(*list[i], f, "degrees"), f + ".degrees");
-            rm = glm::rotate(glm::mat4(1.0f), glm::radians(deg), glm::normalize(axis)) * rm;
+            rm = glm::rotate(glm::mat4(1.0f), glm::radians(deg), vec3(unit)) * rm;
         }
         m = m * rm;
     }

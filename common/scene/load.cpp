@@ -27,6 +27,8 @@ std::string bundled_scenes_dir() {
 }
 
 std::string resolve_scene_path(const std::string& arg) {
+    std::error_code ec;
+    if (fs::is_directory(arg, ec)) input_error("{}: is a directory, not a scene file", arg);
     if (fs::exists(arg)) return arg;
     const fs::path bundled = fs::path(bundled_scenes_dir()) / (arg + ".json");
     if (arg.find('/') == std::string::npos && fs::exists(bundled)) return bundled.string();

@@ -1,17 +1,31 @@
 #include "scene/text_parse.h"
 
+#include <cerrno>
 #include <charconv>
 #include <cmath>
+#include <cstring>
+#include <filesystem>
 
 namespace tp {
 
-LineReader::LineReader(std::string path) : path_(std::move(path)), file_(path_) {
-    if (!file_) input_error("{}: cannot open file", path_);
+std::string clip(std::string_view s) {
+    if (s.size() <= kMaxQuoted) return std::string(s);
+    return fmt::format("{}... ({} more bytes)", s.substr(0, kMaxQuoted), s.size() - kMaxQuoted);
+}
+
+LineReader::LineReader(std::string path) : path_(std::move(path)) {
+    std::error_code ec;
+    if (std::filesystem::is_directory(path_, ec))
+        input_error("{}: is a directory, not a file", path_);
+    file_.open(path_);
+    if (!file_) input_error("{}: cannot open file: {}", path_, std::strerror(errno));
 }
 
 bool LineReader::next(std::vector<std::string_view>& tokens) {
     while (std::getline(file_, buffer_)) {
         ++line_no_;
+        // A UTF-8 byte order mark, as some editors write, as the JSON loader accepts it.
+        if (line_no_ == 1 && buffer_.rfind("\xEF\xBB\xBF", 0) == 0) buffer_.erase(0, 3);
         const size_t hash = buffer_.find('#');
         if (hash != std::string::npos) buffer_.resize(hash);
         tokens.clear();

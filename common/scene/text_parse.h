@@ -1,5 +1,5 @@
-// Line-oriented reader for OBJ and MTL: whitespace tokens, '#' comments, CRLF tolerated, and
-// errors that name the file and the line.
+// Line-oriented reader for OBJ and MTL: whitespace tokens, '#' comments, CRLF and a UTF-8 byte
+// order mark tolerated, and errors that name the file and the line.
 #pragma once
 
 #include "shared/lang.h"
@@ -8,9 +8,25 @@
 #include <fstream>
 #include <string>
 #include <string_view>
+#include <type_traits>
 #include <vector>
 
 namespace tp {
+
+// The most characters of the input an error message quotes: a 200 MB token must not make a
+// 200 MB message.
+constexpr size_t kMaxQuoted = 80;
+
+// s, or its first kMaxQuoted characters and how many more there are.
+std::string clip(std::string_view s);
+
+template <typename T>
+decltype(auto) clipped(T&& v) {
+    if constexpr (std::is_convertible_v<const T&, std::string_view>)
+        return clip(std::string_view(v));
+    else
+        return std::forward<T>(v);
+}
 
 class LineReader {
   public:
@@ -22,10 +38,12 @@ class LineReader {
     size_t line() const { return line_no_; }
     const std::string& path() const { return path_; }
 
+    // Text from the file among args is quoted by at most kMaxQuoted characters (clip).
     template <typename... Args>
     [[noreturn]] void fail(fmt::format_string<Args...> f, Args&&... args) const {
-        throw InputError(
-            fmt::format("{}:{}: {}", path_, line_no_, fmt::format(f, std::forward<Args>(args)...)));
+        throw InputError(fmt::format(
+            "{}:{}: {}", path_, line_no_,
+            fmt::format(fmt::runtime(fmt::string_view(f)), clipped(std::forward<Args>(args))...)));
     }
 
     // Strict conversions: the whole token must be a number.

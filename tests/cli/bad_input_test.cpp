@@ -499,3 +499,117 @@ TEST_CASE("an unwritable output path is rejected before rendering and nothing is
     }
     fs::remove_all(dir);
 }
+
+// Issue 23, items 1, 8 and 9: messages that named the wrong cause (before: "up parallel to the
+// viewing direction", "camera.eye must be finite", "got -1", "read error"), geometry beyond the
+// float32 range rule (before: rendered, black on the CPU), a bounded quote of the offending text,
+// and repeated JSON keys (before: the last value silently won).
+TEST_CASE("far geometry, huge values and repeated keys name their real cause", "[cli][bad-input]") {
+    const std::string far_object = scene_json(kCamera, kMaterials, kMeshes,
+                                              R"([{"mesh": "ball", "material": "m"},
+            {"name": "far", "mesh": "ball", "material": "m", "transform": {"translate": [1e30, 0, 0]}}])");
+    check_all({
+        {"an object at 1e30 names the object and the range rule",
+         {{"bad.json", far_object}},
+         "bad.json",
+         "",
+         {"bad.json", "object 1 ('far')", "float32"}},
+        {"a camera eye at 3e38 names the distance",
+         {{"bad.json", with_camera(R"({"eye": [3e38, 0, 0], "target": [0, 0, 0]})")}},
+         "bad.json",
+         "",
+         {"bad.json", "camera.target", "3e+38", "float32"}},
+        {"an OBJ with vertices at +-3e38 and no camera names the object",
+         {{"bad.obj", "v -3e38 0 0\nv 3e38 0 0\nv 0 1 0\nf 1 2 3\n"}},
+         "bad.obj",
+         "",
+         {"bad.obj", "object 0", "float32"}},
+        {"--spp 2^64 - 1 quotes the number",
+         {{"ok.json", with_camera(kCamera)}},
+         "ok.json",
+         "--spp 18446744073709551615",
+         {"--spp", "18446744073709551615"}},
+        {"render.spp 2^64 - 1 quotes the number",
+         {{"bad.json", with_extra(R"("render": {"spp": 18446744073709551615})")}},
+         "bad.json",
+         "",
+         {"bad.json", "render.spp", "got 18446744073709551615"}},
+        {"a repeated JSON key names the key and both lines",
+         {{"bad.json", "{\n  \"camera\": " + kCamera +
+                           ",\n  \"materials\": {\"m\": {\n    \"Kd\": [-1, 0, 0],\n    \"Kd\": "
+                           "[0.5, 0.5, 0.5]}},\n  \"meshes\": " +
+                           kMeshes + ",\n  \"objects\": " + kObjects + "\n}\n"}},
+         "bad.json",
+         "",
+         {"bad.json", "'Kd'", "lines 4 and 5"}},
+    });
+}
+
+TEST_CASE("a scene or MTL path that is a directory says so", "[cli][bad-input]") {
+    const fs::path dir = tp::test::temp_dir("directory-path");
+    fs::create_directory(dir / "x.obj");
+    fs::create_directory(dir / "m.mtl");
+    std::ofstream(dir / "ok.obj") << "mtllib m.mtl\n" << kTriangleObj << "f 1 2 3\n";
+    for (const char* scene : {"x.obj", "ok.obj"}) {
+        const auto r = run(tp::test::twinpath("render " + shell_quote((dir / scene).string()) +
+                                              " -o " + shell_quote((dir / "out.exr").string())));
+        INFO(scene << "\n" << r.out);
+        CHECK(r.exit_code == 2);
+        CHECK(r.out.find("is a directory") != std::string::npos); // before: "read error"
+    }
+    fs::remove_all(dir);
+}
+
+TEST_CASE("a huge token is quoted by at most 80 characters", "[cli][bad-input]") {
+    const fs::path dir = tp::test::temp_dir("huge-token");
+    std::ofstream(dir / "bad.obj") << "v 0 0 0\nv " << std::string(1 << 20, '7') << "x 0 0\n";
+    const auto r = run(tp::test::twinpath("render " + shell_quote((dir / "bad.obj").string()) +
+                                          " -o " + shell_quote((dir / "out.exr").string())));
+    INFO(r.out.substr(0, 400));
+    CHECK(r.exit_code == 2);
+    CHECK(r.out.find("bad.obj:2") != std::string::npos);
+    CHECK(r.out.find("more bytes") != std::string::npos);
+    CHECK(r.out.size() < 400); // before: the whole megabyte
+    fs::remove_all(dir);
+}
+
+TEST_CASE("what looked wrong and is not: a huge rotation axis, a BOM in an OBJ",
+          "[cli][bad-input]") {
+    const fs::path dir = tp::test::temp_dir("accepted");
+    // The axis is a direction: its length does not matter (before: "singular (zero scale?)").
+    std::ofstream(dir / "axis.json") << scene_json(
+        kCamera, kMaterials, kMeshes,
+        R"([{"mesh": "ball", "material": "m", "transform": {"rotate": {"axis": [3e38, 0, 0], "degrees": 30}}}])");
+    // A UTF-8 byte order mark, accepted in JSON, was "unknown OBJ statement" in an OBJ.
+    std::ofstream(dir / "bom.obj") << "\xEF\xBB\xBFv 0 0 0\nv 1 0 0\nv 0 1 0\nf 1 2 3\n";
+    for (const char* scene : {"axis.json", "bom.obj"}) {
+        const auto r = run(tp::test::twinpath("render " + shell_quote((dir / scene).string()) +
+                                              " --spp 1 --width 8 --height 8 -o " +
+                                              shell_quote((dir / "out.exr").string())));
+        INFO(scene << "\n" << r.out);
+        CHECK(r.exit_code == 0);
+    }
+    fs::remove_all(dir);
+}
+
+TEST_CASE("an unknown subcommand is named and the subcommands listed", "[cli][bad-input]") {
+    const auto r = run(tp::test::twinpath("rendr cornell"));
+    INFO(r.out);
+    CHECK(r.exit_code == 2);
+    CHECK(r.out.find("'rendr' is not a subcommand") != std::string::npos);
+    CHECK(r.out.find("render, compare") != std::string::npos);
+}
+
+TEST_CASE("a malformed Vulkan driver manifest is named as a possible cause", "[cli][bad-input]") {
+    const fs::path dir = tp::test::temp_dir("bad-icd");
+    std::ofstream(dir / "icd.json") << "{ \"file_format_version\": \"1.0.0\", \"ICD\": {";
+    const auto r =
+        run("VK_DRIVER_FILES=" + shell_quote((dir / "icd.json").string()) +
+            " VK_ICD_FILENAMES=" + shell_quote((dir / "icd.json").string()) + " " +
+            tp::test::twinpath("render furnace --backend vulkan --spp 1 --width 8 --height 8 -o " +
+                               shell_quote((dir / "out.exr").string())));
+    INFO(r.out);
+    CHECK(r.exit_code == 3);
+    CHECK(r.out.find("icd.json") != std::string::npos);
+    fs::remove_all(dir);
+}
