@@ -1,5 +1,6 @@
 #include "scene/json_duplicate_keys.h"
 
+#include "scene/json_sax.h"
 #include "scene/text_parse.h"
 #include "util/error.h"
 
@@ -14,19 +15,12 @@ namespace {
 using json = nlohmann::json;
 
 // Numbers the keys in document order and stops at the first key an object already has.
-struct DuplicateKeys : json::json_sax_t {
+struct DuplicateKeys : JsonSaxAcceptAll {
     std::vector<std::map<std::string, size_t>> open; // per open object: key -> its number
     size_t keys = 0;
     size_t first = 0, second = 0; // the numbers of the two occurrences, once found
     std::string key_name;
 
-    bool null() override { return true; }
-    bool boolean(bool) override { return true; }
-    bool number_integer(number_integer_t) override { return true; }
-    bool number_unsigned(number_unsigned_t) override { return true; }
-    bool number_float(number_float_t, const string_t&) override { return true; }
-    bool string(string_t&) override { return true; }
-    bool binary(binary_t&) override { return true; }
     bool start_object(std::size_t) override {
         open.emplace_back();
         return true;
@@ -43,11 +37,6 @@ struct DuplicateKeys : json::json_sax_t {
     bool end_object() override {
         open.pop_back();
         return true;
-    }
-    bool start_array(std::size_t) override { return true; }
-    bool end_array() override { return true; }
-    bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) override {
-        return false;
     }
 };
 

@@ -3,6 +3,7 @@
 #include "image/texture_io.h"
 #include "scene/generators.h"
 #include "scene/json_duplicate_keys.h"
+#include "scene/json_sax.h"
 #include "scene/obj_loader.h"
 #include "shared/math.h"
 #include "util/error.h"
@@ -116,20 +117,8 @@ class Reader {
 };
 
 // Byte offset of the first error in a JSON text, from nlohmann's SAX interface.
-struct ErrorOffset : json::json_sax_t {
+struct ErrorOffset : JsonSaxAcceptAll {
     size_t offset = 0;
-    bool null() override { return true; }
-    bool boolean(bool) override { return true; }
-    bool number_integer(number_integer_t) override { return true; }
-    bool number_unsigned(number_unsigned_t) override { return true; }
-    bool number_float(number_float_t, const string_t&) override { return true; }
-    bool string(string_t&) override { return true; }
-    bool binary(binary_t&) override { return true; }
-    bool start_object(std::size_t) override { return true; }
-    bool key(string_t&) override { return true; }
-    bool end_object() override { return true; }
-    bool start_array(std::size_t) override { return true; }
-    bool end_array() override { return true; }
     bool parse_error(std::size_t position, const std::string&,
                      const nlohmann::detail::exception&) override {
         offset = position;
