@@ -16,6 +16,9 @@ void on_signal(int sig) {
     int none = 0;
     if (g_first.compare_exchange_strong(none, sig)) {
         g_stop.store(true);
+        static const char kNote[] = "\ntwinpath: interrupted: finishing the pass in flight to save "
+                                    "it (a second signal exits at once)\n";
+        (void)!::write(STDERR_FILENO, kNote, sizeof kNote - 1); // write() is async-signal safe
         return;
     }
     if (g_writing.load() > 0) {
