@@ -63,7 +63,7 @@ TEST_CASE("outputs naming devices are written in place and the devices stay devi
         CHECK_FALSE(fs::exists(dir / "null.partial"));
     }
     SECTION("-o, --png, --stats into a full device: exit 3 with the reason") {
-        for (const std::string& option : {"-o ", "--png ", "--stats "}) {
+        for (const std::string option : {"-o ", "--png ", "--stats "}) {
             const std::string other = option == "-o " ? "" : "-o " + q(null) + " ";
             const auto r = run(render(other + option + q(full)));
             INFO(option << "\n" << r.out);
