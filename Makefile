@@ -24,8 +24,8 @@ demo: demo-notice configure
 	cmake --build --preset $(PRESET) --target twinpath
 	scripts/demo.sh $(TWINPATH) $(OUT)
 demo-notice:
-	@echo "twinpath: the first make demo on a fresh Debian 12 takes about 15 minutes on 2 cores:"
-	@echo "twinpath: 4 to install some 370 packages (324 MB), 10 to build, 1 to render and compare"
+	@echo "twinpath: the first make demo on a fresh Debian 12 takes about 5 minutes on 2 idle cores"
+	@echo "twinpath: (15 when they are busy): install some 370 packages (324 MB), build, render, compare"
 
 # Configures again with the tests switched on: a build tree that make demo configured has
 # them off, and the test-only programs (chromium, spirv-val) were not installed then.
@@ -34,8 +34,8 @@ test: test-notice test-deps
 	cmake --build --preset $(PRESET)
 	ctest --preset $(PRESET)
 test-notice:
-	@echo "twinpath: the first make test after make demo takes about 23 minutes on 2 cores:"
-	@echo "twinpath: 1 to install Catch2 and Chromium, 8 to build the tests, 15 to run them"
+	@echo "twinpath: the first make test after make demo takes about 8 minutes on 2 idle cores"
+	@echo "twinpath: (23 when they are busy): install Catch2 and Chromium, build the tests, run them"
 
 bench: build
 	$(TWINPATH) bench
