@@ -24,10 +24,10 @@
 #include "bench/scenes.h"
 #include "bench/specialization.h"
 #include "bench/sweep.h"
-#include "compare/text_file.h"
 #include "scene/flatten.h"
 #include "stress/stress.h"
 #include "util/error.h"
+#include "util/output_file.h"
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
@@ -254,7 +254,7 @@ json result_header(const BenchRun& run) {
 void write_derived_files(json& r, const std::string& dir, const std::string& markdown) {
     write_plots(r, dir);
     write_csv_files(r, dir);
-    write_text_file((fs::path(dir) / "bench.md").string(), markdown_section(r, "."));
+    write_output_file((fs::path(dir) / "bench.md").string(), markdown_section(r, "."));
     if (markdown.empty()) return;
     const fs::path md_dir = fs::absolute(markdown).parent_path();
     const std::string section = r["section"].get<std::string>();
@@ -267,7 +267,7 @@ void write_derived_files(json& r, const std::string& dir, const std::string& mar
 void write_outputs(json& r, const BenchOptions& o) {
     fs::create_directories(o.out_dir);
     write_derived_files(r, o.out_dir, o.markdown);
-    write_text_file((fs::path(o.out_dir) / "bench.json").string(), r.dump(2) + "\n");
+    write_output_file((fs::path(o.out_dir) / "bench.json").string(), r.dump(2) + "\n");
     fmt::print("bench: wrote {}/bench.json, bench.md, CSV and plots\n", o.out_dir);
 }
 

@@ -10,9 +10,9 @@
 #include "compare/exact.h"
 #include "compare/report.h"
 #include "compare/summary.h"
-#include "compare/text_file.h"
 #include "image/png_io.h"
 #include "util/error.h"
+#include "util/output_file.h"
 
 #include <fmt/core.h>
 
@@ -37,7 +37,7 @@ struct CompareArgs {
 };
 
 void write_json(const std::optional<std::string>& path, const nlohmann::json& j) {
-    if (path) write_text_file(*path, j.dump(2) + "\n");
+    if (path) write_output_file(*path, j.dump(2) + "\n");
 }
 
 // Runs `write` to fill the report directory; where it fails, the directory goes too if this

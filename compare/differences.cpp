@@ -24,12 +24,10 @@ double floor_variance(double a, double b, double channel_scale, double relative_
 std::string borrowing_sentence(const Differences& d) {
     if (d.rule.borrower == VarianceRule::None) return "equal spp: each image's own variance";
     const bool a = d.rule.borrower == VarianceRule::A;
-    size_t pixels = 0;
-    for (uint8_t b : d.borrowed) pixels += b;
     return fmt::format("{} ({}x fewer samples) took {}'s per-sample variance where it was larger: "
                        "{} of {} pixel-channels, {} of {} pixels",
                        a ? "A" : "B", d.rule.ratio, a ? "B" : "A", d.variance_borrowed,
-                       3 * d.borrowed.size(), pixels, d.borrowed.size());
+                       3 * d.borrowed.size(), d.pixels_borrowed, d.borrowed.size());
 }
 
 PairVariance pair_variance(const VarianceRule& rule, double va, double vb, double va2, double vb2) {
@@ -95,6 +93,7 @@ Differences compute_differences(const RgbImage& a, const RgbImage& b, double rel
             out.borrowed[i] |= uint8_t(pv.borrowed);
         }
     }
+    out.pixels_borrowed = size_t(std::count(out.borrowed.begin(), out.borrowed.end(), 1));
     return out;
 }
 

@@ -67,13 +67,14 @@ struct Differences {
     // Pixel-channels where the image with fewer samples took the other's per-sample variance.
     size_t variance_borrowed = 0;
     std::vector<uint8_t> borrowed; // per pixel: 1 when any of its channels borrowed
+    size_t pixels_borrowed = 0;    // pixels with a 1 in `borrowed`
 
     // Welch-Satterthwaite: nu = var^2 / welch; infinite (normal) when welch is 0.
     double dof(int c, size_t i) const;
 };
 
-// "A (16 spp) took B's per-sample variance (128 spp) where it was larger: 812 of 3072
-// pixel-channels, 301 of 1024 pixels", for the verdict's reports.
+// "A (8x fewer samples) took B's per-sample variance where it was larger: 812 of 3072
+// pixel-channels, 301 of 1024 pixels", for the report.
 std::string borrowing_sentence(const Differences& d);
 
 // Squared floor sigma_f^2 = r^2 (max(|a|,|b|)^2 + s^2), s = the channel's mean of max(|a|,|b|).

@@ -3,10 +3,10 @@
 #include "compare/colormap.h"
 #include "compare/display.h"
 #include "compare/distributions.h"
-#include "compare/text_file.h"
 #include "image/png_io.h"
 #include "util/error.h"
 #include "util/markup_escape.h"
+#include "util/output_file.h"
 
 #include <fmt/format.h>
 
@@ -208,7 +208,7 @@ window.addEventListener('load', function () {{
 )",
         fmt::arg("verdict", r.different ? "different" : "consistent"), fmt::arg("figs", figs),
         fmt::arg("rows", numbers_table(r)));
-    write_text_file(base + "index.html", html);
+    write_output_file(base + "index.html", html);
 }
 
 } // namespace tp

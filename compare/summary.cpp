@@ -72,8 +72,6 @@ nlohmann::json compare_json(const CompareResult& r, const RgbImage& a, const Rgb
         {"channels", chans}};
     j["warnings"] = r.warnings;
     const VarianceRule& rule = r.diff.rule;
-    size_t borrowed_pixels = 0;
-    for (uint8_t b : r.diff.borrowed) borrowed_pixels += b;
     j["variance"] = {
         {"rule", "the image with fewer samples takes the other's per-sample variance where it is "
                  "larger (docs/compare.md, unequal sample counts)"},
@@ -82,7 +80,7 @@ nlohmann::json compare_json(const CompareResult& r, const RgbImage& a, const Rgb
                                                         : nlohmann::json(nullptr)},
         {"spp_ratio", rule.ratio},
         {"pixel_channels_borrowed", r.diff.variance_borrowed},
-        {"pixels_borrowed", borrowed_pixels}};
+        {"pixels_borrowed", r.diff.pixels_borrowed}};
     j["floor"] = {{"relative", r.floor_relative},
                   {"pixel_channels_without_variance", r.diff.at_floor}};
 

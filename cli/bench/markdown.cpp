@@ -2,7 +2,7 @@
 #include "bench/specialization.h"
 
 #include "bench/result_json.h"
-#include "compare/text_file.h"
+#include "util/output_file.h"
 
 #include <fmt/format.h>
 
@@ -297,7 +297,7 @@ void merge_markdown_section(const std::string& path, const std::string& id,
                 : doc.empty() || doc.back() == '\n'                            ? "\n"
                                                                                : "\n\n") +
                block;
-    write_text_file(path, doc);
+    write_output_file(path, doc);
 }
 
 } // namespace tp::bench

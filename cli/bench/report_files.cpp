@@ -2,7 +2,7 @@
 
 #include "bench/result_json.h"
 #include "bench/svg_plot.h"
-#include "compare/text_file.h"
+#include "util/output_file.h"
 
 #include <fmt/format.h>
 
@@ -88,11 +88,11 @@ std::string peer_csv(const json& result) {
 
 void write_csv_files(const json& result, const std::string& dir) {
     if (has_section(result, "ladder"))
-        write_text_file((fs::path(dir) / "ladder.csv").string(), ladder_csv(result));
+        write_output_file((fs::path(dir) / "ladder.csv").string(), ladder_csv(result));
     if (has_section(result, "table"))
-        write_text_file((fs::path(dir) / "table.csv").string(), table_csv(result));
+        write_output_file((fs::path(dir) / "table.csv").string(), table_csv(result));
     if (has_section(result, "peer"))
-        write_text_file((fs::path(dir) / "peer.csv").string(), peer_csv(result));
+        write_output_file((fs::path(dir) / "peer.csv").string(), peer_csv(result));
 }
 
 void write_plots(json& result, const std::string& dir) {
@@ -113,7 +113,7 @@ void write_plots(json& result, const std::string& dir) {
         }
         const std::string rel = "plots/" + sc["name"].get<std::string>() + ".svg";
         fs::create_directories(fs::path(dir) / "plots");
-        write_text_file((fs::path(dir) / rel).string(), svg_loglog(plot));
+        write_output_file((fs::path(dir) / rel).string(), svg_loglog(plot));
         sc["plot"] = rel;
     }
 }

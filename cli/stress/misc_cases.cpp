@@ -1,7 +1,7 @@
 // Cases on the film itself and on the loader.
 #include "stress/common.h"
 
-#include "compare/text_file.h"
+#include "util/output_file.h"
 
 #include <fmt/format.h>
 
@@ -109,7 +109,7 @@ CaseResult nan_vertex_case(const std::string& twinpath_binary, const std::string
         fs::create_directories(temp_dir);
         const fs::path obj = fs::path(temp_dir) / "nan_vertex.obj";
         const fs::path exr = fs::path(temp_dir) / "nan_vertex.exr";
-        write_text_file(obj.string(), "v 0 0 0\nv 1 0 0\nv nan 1 0\nv 0 1 0\nf 1 2 4\nf 2 3 4\n");
+        write_output_file(obj.string(), "v 0 0 0\nv 1 0 0\nv nan 1 0\nv 0 1 0\nf 1 2 4\nf 2 3 4\n");
         fs::remove(exr);
         const std::string log = (fs::path(temp_dir) / "nan_vertex.log").string();
         const std::string cmd = fmt::format("'{}' render '{}' -o '{}' --spp 1 --width 4 --height 4 "

@@ -3,8 +3,8 @@
 // (--quick: the CI sizes), then stress.md and stress.json in the output directory.
 #include "stress/common.h"
 
-#include "compare/text_file.h"
 #include "util/error.h"
+#include "util/output_file.h"
 #include "vulkan_rt/context.h"
 #include "vulkan_rt/vulkan_renderer.h"
 
@@ -157,9 +157,9 @@ int run_stress(const StressOptions& o) {
         j["cases"].push_back(to_json(c));
         all_pass = all_pass && (c.pass || c.skipped);
     }
-    write_text_file((fs::path(o.out_dir) / "stress.json").string(), j.dump(2) + "\n");
-    write_text_file((fs::path(o.out_dir) / "stress.md").string(),
-                    markdown(cases, o, engines, elapsed));
+    write_output_file((fs::path(o.out_dir) / "stress.json").string(), j.dump(2) + "\n");
+    write_output_file((fs::path(o.out_dir) / "stress.md").string(),
+                      markdown(cases, o, engines, elapsed));
     fs::remove_all(fs::path(o.out_dir) / "tmp");
     fmt::print("stress: wrote {}/stress.md and stress.json ({} cases, {})\n", o.out_dir,
                cases.size(), all_pass ? "all passed" : "some FAILED");

@@ -61,22 +61,28 @@ void check_camera(const std::string& path, const CameraDesc& c, const RenderSett
         input_error("{}: camera.up (--up) is zero or parallel to the viewing direction", path);
 }
 
+// One object's vertices: their bounds in the world (the scene's coordinates, in double) and
+// their largest coordinate in object space.
+struct ObjectExtent {
+    glm::dvec3 lo{std::numeric_limits<double>::max()}, hi{-std::numeric_limits<double>::max()};
+    double object_max = 0.0;
+};
+
 // The float32 range rule (docs/scene-format.md, "Range"): every object's vertices, in object
 // space and in the world relative to `origin`, within kMaxWorldRange per coordinate; the first
-// object beyond it is named.
-void check_range(const Scene& scene, const glm::dvec3& origin) {
+// object beyond it is named. Per coordinate the farthest vertex from `origin` is a corner of the
+// object's world bounds.
+void check_range(const Scene& scene, const std::vector<ObjectExtent>& extents,
+                 const glm::dvec3& origin) {
     for (size_t i = 0; i < scene.objects.size(); ++i) {
-        const Object& o = scene.objects[i];
-        double far = 0.0;
-        for (const vec3& p : scene.meshes[o.mesh].positions) {
-            const glm::dvec3 w(glm::dmat4(o.transform) * glm::dvec4(glm::dvec3(p), 1.0));
-            const glm::dvec3 m = glm::max(glm::abs(w - origin), glm::abs(glm::dvec3(p)));
-            far = std::max(far, std::max(m.x, std::max(m.y, m.z)));
-        }
+        const ObjectExtent& e = extents[i];
+        if (e.lo.x > e.hi.x) continue; // a mesh without vertices
+        const glm::dvec3 m = glm::max(glm::abs(e.lo - origin), glm::abs(e.hi - origin));
+        const double far = std::max(e.object_max, std::max(m.x, std::max(m.y, m.z)));
         if (!(far <= kMaxWorldRange))
             input_error("{}: object {} ('{}') has a vertex {:.3g} m from the {}, beyond the {:.3g} "
                         "m that float32 geometry represents (docs/scene-format.md, \"Range\")",
-                        scene.path, i, o.name, far,
+                        scene.path, i, scene.objects[i].name, far,
                         scene.camera.given ? "camera" : "scene's centre", kMaxWorldRange);
     }
 }
@@ -144,22 +150,31 @@ FlatScene flatten(const Scene& input) {
     // The world bounds in the scene's coordinates (double: no rounding at any distance), for
     // auto-framing; the camera's eye is then the origin of the world both engines render in.
     if (scene.objects.empty()) input_error("{}: the scene has no objects", scene.path);
+    std::vector<ObjectExtent> extents(scene.objects.size());
     glm::dvec3 lo(glm::dvec3(std::numeric_limits<double>::max()));
     glm::dvec3 hi(-lo);
-    for (const Object& o : scene.objects)
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const Object& o = scene.objects[i];
+        ObjectExtent& e = extents[i];
         for (const vec3& p : scene.meshes[o.mesh].positions) {
-            const glm::dvec3 w(glm::dmat4(o.transform) * glm::dvec4(glm::dvec3(p), 1.0));
-            lo = glm::min(lo, w);
-            hi = glm::max(hi, w);
+            const glm::dvec3 q(p);
+            const glm::dvec3 w(glm::dmat4(o.transform) * glm::dvec4(q, 1.0));
+            e.lo = glm::min(e.lo, w);
+            e.hi = glm::max(e.hi, w);
+            const glm::dvec3 a = glm::abs(q);
+            e.object_max = std::max(e.object_max, std::max(a.x, std::max(a.y, a.z)));
         }
+        lo = glm::min(lo, e.lo);
+        hi = glm::max(hi, e.hi);
+    }
     CameraDesc cam = scene.camera;
     const float aspect = float(scene.settings.width) / float(std::max(scene.settings.height, 1u));
     if (!cam.given) {
-        check_range(scene, 0.5 * (lo + hi));
+        check_range(scene, extents, 0.5 * (lo + hi));
         frame_camera(cam, vec3(lo), vec3(hi), aspect);
     }
     check_camera(scene.path, cam, scene.settings);
-    check_range(scene, glm::dvec3(cam.eye));
+    check_range(scene, extents, glm::dvec3(cam.eye));
     f.origin = glm::dvec3(cam.eye);
     f.bounds_min = rebased(lo, f.origin);
     f.bounds_max = rebased(hi, f.origin);
