@@ -2,7 +2,7 @@
 #include "arg_parse.h"
 #include "commands.h"
 #include "output_paths.h"
-#include "progress.h"
+#include "util/progress_bar.h"
 
 #include "compare/colormap.h"
 #include "cpu_ref/cpu_renderer.h"

@@ -1,6 +1,6 @@
 // One dispatch of a small compute shader over plain storage buffers, for the shaders that check
 // the shared code on a device: the GPU tests (tests/gpu) and the stress suite's edge-aimed rays
-// and BRDF sweeps (cli/stress), which `twinpath bench --stress` also runs on the GPU machine.
+// and BRDF sweeps (stress), which `twinpath bench --stress` also runs on the GPU machine.
 #pragma once
 
 #include "shared/features.h"

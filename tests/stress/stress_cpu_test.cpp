@@ -1,5 +1,5 @@
 // The stress suite on the CPU backend (Embree) and the C++ shared functions, at CI size. Each
-// case's expected outcome and tolerance are stated where the case is built (cli/stress/*.cpp)
+// case's expected outcome and tolerance are stated where the case is built (stress/*.cpp)
 // and derived in docs/stress.md; in short:
 //   - renders that must estimate the same image are judged by compare's two-sample test at
 //     alpha = 1e-3 per comparison (about 40 comparisons per backend: a family-wise false-alarm

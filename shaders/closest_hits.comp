@@ -1,7 +1,7 @@
 #version 460
-// Watertightness (cli/stress/watertight.cpp): one ray per invocation through the compute mode's
-// trace include (shaders/trace_bvh.glsl, the render shader's bindings and BVH), the closest
-// hit's distance back. On lavapipe every loop of a SIMD group stops silently once the group has
+// Closest hits for vulkan_rt/ray_queries.h in compute mode: one ray per invocation through the
+// compute mode's trace include (trace_bvh.glsl, the render shader's bindings and BVH), the
+// closest hit's distance back. On lavapipe every loop of a SIMD group stops silently once the group has
 // iterated 65535 times (shaders/accumulate.glsl); a probe loop after the trace reports whether
 // that budget held, so that a cut traversal is never mistaken for a leak.
 #extension GL_GOOGLE_include_directive : require
@@ -9,7 +9,7 @@
 #include "bindings.glsl"
 #include "trace_bvh.glsl"
 
-struct StressHit {
+struct RayHit {
     float t;
     uint found;
     uint budget_held;
@@ -21,14 +21,14 @@ layout(scalar, set = 0, binding = BINDING_COUNT) readonly buffer RayBuffer {
     Ray rays[];
 };
 layout(scalar, set = 0, binding = BINDING_COUNT + 1) writeonly buffer HitBuffer {
-    StressHit hits[];
+    RayHit hits[];
 };
 
 void main() {
     uint i = gl_GlobalInvocationID.x;
     if (i >= batch.sample_count) return;
     TraceHit h;
-    StressHit o;
+    RayHit o;
     o.found = trace_closest(rays[i], h) ? 1u : 0u;
     o.t = h.t;
     uint n = 0u;

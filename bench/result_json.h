@@ -1,4 +1,4 @@
-// Small pieces of the bench result's JSON (cmd_bench.cpp), shared by the sections that write it
+// Small pieces of the bench result's JSON (run_bench.cpp), shared by the sections that write it
 // (ladder.cpp, sweep.cpp) and the files that read it back (report_files.cpp, markdown.cpp).
 #pragma once
 

@@ -1,5 +1,5 @@
 #version 460
-// BRDF extremes in GLSL (cli/stress/brdf_cases.cpp): the shared modified-Phong functions
+// BRDF extremes in GLSL (stress/brdf_cases.cpp): the shared modified-Phong functions
 // (common/shared/brdf.h) evaluated on the device for the host's inputs; the host applies the
 // same checks as to the C++ results.
 #extension GL_GOOGLE_include_directive : require

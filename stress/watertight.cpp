@@ -8,24 +8,14 @@
 // The 1e-4 covers the rounding of the target and of t (the faces meet at the target; a farther
 // hit is another part of the mesh at least ~1e-3 of the mesh size behind).
 #include "stress/common.h"
-#include "vulkan_rt/shader_dispatch.h"
 
-#include "cpu_ref/embree_accel.h"
+#include "cpu_ref/ray_queries.h"
 #include "scene/generators.h"
 #include "scene/load.h"
-#include "shaders/interface.h"
-#include "stress_trace_comp.spv.h"
-#include "stress_trace_rgen.spv.h"
-#include "vulkan_rt/accel_structures.h"
-#include "vulkan_rt/barriers.h"
-#include "vulkan_rt/bvh_builder.h"
-#include "vulkan_rt/rt_functions.h"
-#include "vulkan_rt/rt_program.h"
-#include "vulkan_rt/scene_buffers.h"
+#include "vulkan_rt/ray_queries.h"
 
 #include <fmt/format.h>
 
-#include <cstring>
 #include <filesystem>
 #include <functional>
 #include <map>
@@ -196,15 +186,7 @@ std::vector<RaySet> ray_sets(const Size& s, const std::string& assets_dir,
     return sets;
 }
 
-// What one engine answered for a ray set: the closest hit's t and whether there was one, per
-// ray, and how many traversals the loop budget cut (compute mode on lavapipe).
-struct Traced {
-    std::vector<float> t;
-    std::vector<uint8_t> found;
-    uint64_t truncated = 0;
-};
-
-CaseResult verdict(const RaySet& rs, const Traced& traced, const std::string& backend,
+CaseResult verdict(const RaySet& rs, const ClosestHits& traced, const std::string& backend,
                    const std::string& mode) {
     const std::vector<float>& t = traced.t;
     const std::vector<uint8_t>& found = traced.found;
@@ -240,16 +222,10 @@ CaseResult verdict(const RaySet& rs, const Traced& traced, const std::string& ba
     return c;
 }
 
-// One ray's answer from stress_trace.comp or stress_trace.rgen.
-struct StressHit {
-    float t;
-    uint32_t found, budget_held, pad0;
-};
-
 // The cases of one engine: every ray set through `trace`, timed.
 std::vector<CaseResult> run_cases(const Size& s, const std::string& assets_dir,
                                   const std::string& backend, const std::string& mode,
-                                  const std::function<Traced(const RaySet&)>& trace) {
+                                  const std::function<ClosestHits(const RaySet&)>& trace) {
     std::vector<CaseResult> out;
     for (const RaySet& rs : ray_sets(s, assets_dir, out)) {
         const auto t0 = std::chrono::steady_clock::now();
@@ -265,117 +241,21 @@ std::vector<CaseResult> run_cases(const Size& s, const std::string& assets_dir,
 } // namespace
 
 std::vector<CaseResult> watertight_cases_cpu(const Size& s, const std::string& assets_dir) {
-    return run_cases(s, assets_dir, "cpu", "embree", [](const RaySet& rs) {
-        const EmbreeAccel embree(rs.scene);
-        Traced out{std::vector<float>(rs.rays.size()), std::vector<uint8_t>(rs.rays.size())};
-        for (size_t i = 0; i < rs.rays.size(); ++i) {
-            const Hit h = embree.intersect(rs.rays[i]);
-            out.found[i] = h.found;
-            out.t[i] = h.t;
-        }
-        return out;
-    });
+    return run_cases(s, assets_dir, "cpu", "embree",
+                     [](const RaySet& rs) { return closest_hits_cpu(rs.scene, rs.rays); });
 }
 
 std::vector<CaseResult> watertight_cases_gpu(const VulkanContext& ctx, const Size& s,
                                              const std::string& assets_dir) {
     return run_cases(s, assets_dir, "vulkan", "compute", [&ctx](const RaySet& rs) {
-        const BvhBuild bvh = build_bvh(rs.scene);
-        const SceneBuffers sb = upload_scene(ctx, rs.scene, rs.scene.params, bvh.mesh_roots, 0);
-        const BvhBuffers bb = upload_bvh(ctx, bvh);
-        const Buffer dummy(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
-        std::vector<const Buffer*> bound;
-        for (const Buffer& b : sb.slots) bound.push_back(&b);
-        bound.push_back(&bb.nodes);
-        bound.push_back(&bb.triangles);
-        bound.push_back(&dummy); // accumulators
-        bound.push_back(&dummy); // counters
-        // Whatever slots the render interface adds after these (debug buffers) get the
-        // placeholder too: the rays and hits follow at BINDING_COUNT.
-        while (bound.size() < BINDING_COUNT) bound.push_back(&dummy);
-        Traced out{std::vector<float>(rs.rays.size()), std::vector<uint8_t>(rs.rays.size())};
-        // Chunks of 2^18 rays: a few MB per dispatch, and a cut traversal is retried alone.
-        const size_t chunk = size_t(1) << 18;
-        for (size_t begin = 0; begin < rs.rays.size(); begin += chunk) {
-            std::vector<Ray> rays(rs.rays.begin() + begin,
-                                  rs.rays.begin() + std::min(rs.rays.size(), begin + chunk));
-            std::vector<size_t> index(rays.size());
-            for (size_t i = 0; i < index.size(); ++i) index[i] = begin + i;
-            for (int attempt = 0; attempt < 4 && !rays.empty(); ++attempt) {
-                BatchParams bp{};
-                bp.sample_count = uint32_t(rays.size());
-                bp.bvh_top_root = bvh.top_root;
-                bp.probe_iterations = LOOP_PROBE_ITERATIONS;
-                const auto res = run_compute_shader(
-                    ctx, tp_spirv_stress_trace_comp, sizeof(tp_spirv_stress_trace_comp),
-                    {bytes_of(rays)}, {rays.size() * sizeof(StressHit)}, &bp, sizeof(bp),
-                    uint32_t(rays.size() + 63) / 64, bound);
-                const std::vector<StressHit> hits = as_vector<StressHit>(res[0]);
-                std::vector<Ray> again;
-                std::vector<size_t> again_index;
-                for (size_t i = 0; i < rays.size(); ++i) {
-                    if (!hits[i].budget_held) {
-                        again.push_back(rays[i]);
-                        again_index.push_back(index[i]);
-                        continue;
-                    }
-                    out.t[index[i]] = hits[i].t;
-                    out.found[index[i]] = uint8_t(hits[i].found);
-                }
-                rays.swap(again);
-                index.swap(again_index);
-            }
-            out.truncated += rays.size();
-        }
-        return out;
+        return closest_hits_compute(ctx, rs.scene, rs.rays);
     });
 }
 
 std::vector<CaseResult> watertight_cases_pipeline(const VulkanContext& ctx, const Size& s,
                                                   const std::string& assets_dir) {
-    const RtFunctions rt(ctx.device());
-    return run_cases(s, assets_dir, "vulkan", "pipeline", [&ctx, &rt](const RaySet& rs) {
-        // The render's own acceleration structures and pipeline (pipeline_renderer.cpp), with
-        // stress_trace.rgen as the ray-generation shader.
-        const SceneBuffers sb = upload_scene(ctx, rs.scene, rs.scene.params, {}, kAccelInputUsage);
-        const AccelStructures as(ctx, rt, rs.scene, sb);
-        RtProgram program(ctx, rt, sizeof(BatchParams), tp_spirv_stress_trace_rgen,
-                          sizeof(tp_spirv_stress_trace_rgen), FEATURES_ALL, as.exact_count() > 0);
-        program.bind_tlas(as.tlas());
-        for (uint32_t b = 0; b < sb.slots.size(); ++b) program.bind(b, sb.slots[b]);
-        const Buffer dummy(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
-        program.bind(BINDING_ACCUM, dummy);
-        program.bind(BINDING_COUNTERS, dummy);
-
-        Uploader up(ctx);
-        const Buffer rays = up.add(rs.rays, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT);
-        up.flush();
-        const size_t hit_bytes = rs.rays.size() * sizeof(StressHit);
-        const Buffer hits(ctx, hit_bytes,
-                          VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT,
-                          false);
-        const Buffer readback(ctx, hit_bytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true);
-        program.bind(BINDING_DEBUG, rays);
-        program.bind(BINDING_AOV, hits);
-        BatchParams bp{};
-        bp.sample_count = uint32_t(rs.rays.size());
-        // A 2D launch of rows of 4096 rays (4.4e6 rays: 1070 rows).
-        const uint32_t width = 4096;
-        ctx.submit_and_wait([&](VkCommandBuffer cmd) {
-            program.record_trace(cmd, &bp, width, (bp.sample_count + width - 1) / width);
-            record_shader_barrier(cmd, VK_PIPELINE_STAGE_RAY_TRACING_SHADER_BIT_KHR);
-            const VkBufferCopy region{0, 0, hit_bytes};
-            vkCmdCopyBuffer(cmd, hits.handle(), readback.handle(), 1, &region);
-            record_host_read_barrier(cmd);
-        });
-        std::vector<StressHit> h(rs.rays.size());
-        std::memcpy(h.data(), readback.mapped(), hit_bytes);
-        Traced out{std::vector<float>(h.size()), std::vector<uint8_t>(h.size())};
-        for (size_t i = 0; i < h.size(); ++i) {
-            out.t[i] = h[i].t;
-            out.found[i] = uint8_t(h[i].found);
-        }
-        return out;
+    return run_cases(s, assets_dir, "vulkan", "pipeline", [&ctx](const RaySet& rs) {
+        return closest_hits_pipeline(ctx, rs.scene, rs.rays);
     });
 }
 

@@ -1,7 +1,7 @@
 // Identity of a rendered image's inputs, for the reference cache: a hash of the flattened
 // scene (every array both engines render from, the camera, film size, depths, spp and seed)
 // and the renderer version (project version + the hash of the integrator sources,
-// cli/bench/renderer_version.cmake).
+// bench/renderer_version.cmake).
 #pragma once
 
 #include "scene/flatten.h"

@@ -1,4 +1,4 @@
-#include "progress.h"
+#include "util/progress_bar.h"
 
 #include <fmt/core.h>
 

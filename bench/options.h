@@ -1,5 +1,5 @@
 // What one `twinpath bench` run is asked to do: which sections, scenes and backends, at which
-// size and sample counts, and where its files go. cmd_bench.cpp fills it from the command line;
+// size and sample counts, and where its files go. cli/cmd_bench.cpp fills it from the command line;
 // every section reads it and nothing else.
 #pragma once
 

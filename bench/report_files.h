@@ -1,5 +1,5 @@
 // The machine-readable outputs of a benchmark, all derived from its JSON result (the one
-// record of the run, see cmd_bench.cpp): CSV tables and one SVG plot per scene.
+// record of the run, see run_bench.cpp): CSV tables and one SVG plot per scene.
 #pragma once
 
 #include <nlohmann/json.hpp>

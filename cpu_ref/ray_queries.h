@@ -1,0 +1,15 @@
+// Closest-hit queries on the CPU reference's acceleration structure (embree_accel.h: Embree with
+// the exact-triangle filter), for checks that aim rays at a scene directly.
+#pragma once
+
+#include "render/closest_hits.h"
+#include "scene/flatten.h"
+#include "shared/path.h"
+
+#include <vector>
+
+namespace tp {
+
+ClosestHits closest_hits_cpu(const FlatScene& scene, const std::vector<Ray>& rays);
+
+} // namespace tp

@@ -1,0 +1,27 @@
+// Closest-hit queries through the render shaders' own trace code, for checks that aim rays at a
+// scene directly: compute mode's BVH traversal (shaders/trace_bvh.glsl, via
+// shaders/closest_hits.comp) and pipeline mode's traceRayEXT on the render's TLAS
+// (shaders/trace_rtx.glsl, via shaders/closest_hits.rgen).
+#pragma once
+
+#include "render/closest_hits.h"
+#include "scene/flatten.h"
+#include "shared/path.h"
+
+#include <vector>
+
+namespace tp {
+
+class VulkanContext;
+
+// Compute mode on `ctx`. On lavapipe a traversal can be cut by the loop budget
+// (shaders/accumulate.glsl): such rays are retried alone, and those still cut are counted in
+// ClosestHits::truncated.
+ClosestHits closest_hits_compute(const VulkanContext& ctx, const FlatScene& scene,
+                                 const std::vector<Ray>& rays);
+// Pipeline mode on `ctx`, a context made for pipeline mode. The driver's traversal has no loop
+// budget: every answer is final.
+ClosestHits closest_hits_pipeline(const VulkanContext& ctx, const FlatScene& scene,
+                                  const std::vector<Ray>& rays);
+
+} // namespace tp
