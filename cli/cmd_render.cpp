@@ -28,6 +28,7 @@ struct RenderArgs {
     std::optional<std::string> output; // each output: given (perhaps as "") or not
     std::string backend = "cpu";
     std::string vk_mode = "auto";
+    std::optional<std::string> bvh; // --bvh binary|wide (compute mode's BVH layout)
     std::optional<uint32_t> spp, width, height, min_depth, max_depth;
     double time_limit = 0;
     uint32_t seed = 0;
@@ -163,6 +164,7 @@ int run_render(const RenderArgs& a) {
         VulkanOptions vk;
         vk.device = a.device;
         vk.mode = a.vk_mode;
+        if (a.bvh) vk.bvh = parse_bvh_layout(*a.bvh);
         vk.pipeline_statistics = a.pipeline_stats.has_value();
         result = render_vulkan(flat, opt, vk);
     }
@@ -228,6 +230,8 @@ Subcommand add_render_command(CLI::App& app) {
         ->check(CLI::IsMember({"cpu", "vulkan"}));
     c->add_option("--vk-mode", a->vk_mode, "Vulkan mode")
         ->check(CLI::IsMember({"auto", "compute", "pipeline"}));
+    c->add_option("--bvh", a->bvh, "Compute mode's BVH layout")
+        ->check(CLI::IsMember({"binary", "wide"}));
     c->add_option("--spp", a->spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 30));
     c->add_option("--time-limit", a->time_limit, "Stop after this many seconds (whole passes)")
         ->check(number_in(0.0, 1e9));

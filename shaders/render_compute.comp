@@ -1,10 +1,15 @@
 #version 460
 // Compute-mode entry point: one invocation per pixel of the batch's rows, each tracing the
-// batch's samples of its pixel with the software-BVH trace include.
+// batch's samples of its pixel with the software-BVH trace include: the binary BVH's, or with
+// TP_TRACE_WIDE the compressed 8-wide BVH's (vulkan_rt/CMakeLists.txt builds both modules).
 #extension GL_GOOGLE_include_directive : require
 
 #include "bindings.glsl"
+#ifdef TP_TRACE_WIDE
+#include "trace_cwbvh.glsl"
+#else
 #include "trace_bvh.glsl"
+#endif
 #ifdef TP_DEBUG_SHADER
 #include "debug.glsl"
 #endif

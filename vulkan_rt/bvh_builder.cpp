@@ -4,67 +4,12 @@
 #include "shared/surface.h"
 #include "util/error.h"
 
-#include <embree3/rtcore.h>
-#include <embree3/rtcore_builder.h>
+#include "vulkan_rt/embree_tree.h"
 
 #include <algorithm>
-#include <cmath>
-#include <new>
 
 namespace tp {
 namespace {
-
-// Embree builds into nodes that we allocate through its thread-local allocator (the memory
-// belongs to the RTCBVH object) and hands back the root; flatten() then copies the tree into
-// the shader's layout.
-struct BuildNode {
-    uint32_t count; // 0: BuildInner; > 0: BuildLeaf with that many items
-};
-struct BuildInner : BuildNode {
-    BuildNode* child[2] = {nullptr, nullptr};
-    RTCBounds bounds[2] = {};
-};
-struct BuildLeaf : BuildNode {
-    uint32_t* items; // primitive IDs
-};
-
-void* create_node(RTCThreadLocalAllocator alloc, unsigned int, void*) {
-    void* p = rtcThreadLocalAlloc(alloc, sizeof(BuildInner), 16);
-    auto* n = new (p) BuildInner();
-    n->count = 0;
-    return n;
-}
-
-void set_children(void* node, void** children, unsigned int n, void*) {
-    for (unsigned int i = 0; i < n && i < 2; ++i)
-        static_cast<BuildInner*>(node)->child[i] = static_cast<BuildNode*>(children[i]);
-}
-
-void set_bounds(void* node, const RTCBounds** bounds, unsigned int n, void*) {
-    for (unsigned int i = 0; i < n && i < 2; ++i)
-        static_cast<BuildInner*>(node)->bounds[i] = *bounds[i];
-}
-
-void* create_leaf(RTCThreadLocalAllocator alloc, const RTCBuildPrimitive* prims, size_t n, void*) {
-    auto* leaf = new (rtcThreadLocalAlloc(alloc, sizeof(BuildLeaf), 16)) BuildLeaf();
-    leaf->count = uint32_t(n);
-    leaf->items = static_cast<uint32_t*>(rtcThreadLocalAlloc(alloc, n * sizeof(uint32_t), 4));
-    for (size_t i = 0; i < n; ++i) leaf->items[i] = prims[i].primID;
-    return leaf;
-}
-
-RTCBuildPrimitive make_primitive(vec3 lo, vec3 hi, uint32_t id) {
-    RTCBuildPrimitive p;
-    p.lower_x = lo.x;
-    p.lower_y = lo.y;
-    p.lower_z = lo.z;
-    p.geomID = 0;
-    p.upper_x = hi.x;
-    p.upper_y = hi.y;
-    p.upper_z = hi.z;
-    p.primID = id;
-    return p;
-}
 
 // A leaf item with its plane normal, which intersect_triangle_normal takes from the buffer
 // (shared/intersect.h).
@@ -86,96 +31,48 @@ BvhNode empty_node() {
     return n;
 }
 
-class Builder {
+// Copies Embree's binary trees into the node layout of shared/intersect.h.
+class BinaryWriter {
   public:
-    Builder() {
-        device_ = rtcNewDevice(nullptr);
-        if (!device_) runtime_error("cannot create an Embree device for the GPU BVH");
-    }
-    ~Builder() { rtcReleaseDevice(device_); }
-    Builder(const Builder&) = delete;
-    Builder& operator=(const Builder&) = delete;
+    explicit BinaryWriter(std::vector<BvhNode>& nodes) : nodes_(&nodes) {}
 
-    // Builds a tree over `prims` and appends it to `nodes`; returns the root node index and
-    // its depth. Leaf items go through emit_leaf: (first item, count) of the child reference.
-    // A tree of one leaf gets a root node with that leaf and an absent second child.
-    template <typename EmitLeaf>
-    uint32_t build(std::vector<BvhNode>& nodes, std::vector<RTCBuildPrimitive> prims,
-                   uint32_t max_leaf, uint32_t max_depth, uint32_t& depth, EmitLeaf emit_leaf) {
-        nodes_ = &nodes;
+    // Appends the tree and returns its root node index and depth. A tree of one leaf gets a
+    // root node with that leaf and an absent second child; an empty one (root null), a root
+    // with no children.
+    uint32_t write(const TreeNode* top, const RTCBounds& all, const LeafEmitter& emit_leaf,
+                   uint32_t& depth) {
         depth = 1;
-        const uint32_t root = uint32_t(nodes.size());
-        nodes.push_back(empty_node());
-        if (prims.empty()) return root;
-
-        RTCBounds all{prims[0].lower_x, prims[0].lower_y, prims[0].lower_z, 0.0f,
-                      prims[0].upper_x, prims[0].upper_y, prims[0].upper_z, 0.0f};
-        for (const RTCBuildPrimitive& p : prims) {
-            all.lower_x = std::min(all.lower_x, p.lower_x);
-            all.lower_y = std::min(all.lower_y, p.lower_y);
-            all.lower_z = std::min(all.lower_z, p.lower_z);
-            all.upper_x = std::max(all.upper_x, p.upper_x);
-            all.upper_y = std::max(all.upper_y, p.upper_y);
-            all.upper_z = std::max(all.upper_z, p.upper_z);
-        }
-
-        RTCBVH bvh = rtcNewBVH(device_);
-        RTCBuildArguments args = rtcDefaultBuildArguments();
-        args.buildQuality = RTC_BUILD_QUALITY_MEDIUM; // binned SAH, no spatial splits
-        args.maxBranchingFactor = 2;
-        args.maxDepth = max_depth;
-        args.minLeafSize = 1;
-        args.maxLeafSize = max_leaf;
-        args.traversalCost = 1.0f;
-        args.intersectionCost = 1.0f;
-        args.bvh = bvh;
-        args.primitives = prims.data();
-        args.primitiveCount = prims.size();
-        args.primitiveArrayCapacity = prims.size();
-        args.createNode = create_node;
-        args.setNodeChildren = set_children;
-        args.setNodeBounds = set_bounds;
-        args.createLeaf = create_leaf;
-        auto* top = static_cast<BuildNode*>(rtcBuildBVH(&args));
-        const RTCError error = rtcGetDeviceError(device_);
-        if (!top || error != RTC_ERROR_NONE) {
-            rtcReleaseBVH(bvh);
-            if (error == RTC_ERROR_OUT_OF_MEMORY)
-                runtime_error("out of host memory while building the GPU BVH");
-            runtime_error("Embree could not build the GPU BVH");
-        }
+        const uint32_t root = uint32_t(nodes_->size());
+        nodes_->push_back(empty_node());
+        if (!top) return root;
         if (top->count > 0) {
-            set_child(root, 0, all, static_cast<BuildLeaf*>(top), emit_leaf, depth, 1);
+            set_child(root, 0, all, static_cast<const TreeLeaf*>(top), emit_leaf, depth, 1);
         } else {
-            flatten_inner(root, static_cast<BuildInner*>(top), emit_leaf, depth, 1);
+            flatten_inner(root, static_cast<const TreeInner*>(top), emit_leaf, depth, 1);
         }
-        rtcReleaseBVH(bvh);
         return root;
     }
 
   private:
-    template <typename EmitLeaf>
-    void flatten_inner(uint32_t index, const BuildInner* n, EmitLeaf& emit_leaf, uint32_t& depth,
-                       uint32_t level) {
+    void flatten_inner(uint32_t index, const TreeInner* n, const LeafEmitter& emit_leaf,
+                       uint32_t& depth, uint32_t level) {
         depth = std::max(depth, level);
-        for (int c = 0; c < 2; ++c) {
-            if (!n->child[c]) continue;
+        for (uint32_t c = 0; c < n->children; ++c) {
             if (n->child[c]->count > 0) {
-                set_child(index, c, n->bounds[c], static_cast<const BuildLeaf*>(n->child[c]),
+                set_child(index, int(c), n->bounds[c], static_cast<const TreeLeaf*>(n->child[c]),
                           emit_leaf, depth, level);
             } else {
                 const uint32_t child = uint32_t(nodes_->size());
                 nodes_->push_back(empty_node());
-                flatten_inner(child, static_cast<const BuildInner*>(n->child[c]), emit_leaf, depth,
+                flatten_inner(child, static_cast<const TreeInner*>(n->child[c]), emit_leaf, depth,
                               level + 1);
-                write_child(index, c, n->bounds[c], child, 0);
+                write_child(index, int(c), n->bounds[c], child, 0);
             }
         }
     }
 
-    template <typename EmitLeaf>
-    void set_child(uint32_t index, int c, const RTCBounds& b, const BuildLeaf* leaf,
-                   EmitLeaf& emit_leaf, uint32_t& depth, uint32_t level) {
+    void set_child(uint32_t index, int c, const RTCBounds& b, const TreeLeaf* leaf,
+                   const LeafEmitter& emit_leaf, uint32_t& depth, uint32_t level) {
         depth = std::max(depth, level);
         write_child(index, c, b, emit_leaf(leaf->items, leaf->count), leaf->count);
     }
@@ -196,16 +93,45 @@ class Builder {
         }
     }
 
-    std::vector<BvhNode>* nodes_ = nullptr;
-    RTCDevice device_ = nullptr;
+    std::vector<BvhNode>* nodes_;
 };
 
-// Leaves of at most 4 triangles: a leaf is then at most 192 contiguous bytes.
+// Builds the trees of one BvhBuild in its layout: Embree's binary tree as it is, or an 8-ary
+// one with leaves of at most 3 triangles for the compressed wide nodes (wide_bvh.h).
+class Builder {
+  public:
+    explicit Builder(BvhBuild& out) : out_(out) {}
+
+    // Appends a tree over `prims` in the chosen layout; returns its root node index and depth.
+    // Binary leaves hold up to `max_binary_leaf` items.
+    uint32_t build(std::vector<RTCBuildPrimitive> prims, uint32_t max_binary_leaf,
+                   uint32_t max_depth, uint32_t& depth, const LeafEmitter& emit_leaf) {
+        const bool wide = out_.layout == BvhLayout::wide;
+        const TreeNode* top =
+            prims.empty() ? nullptr
+                          : embree_.build(prims, wide ? 8 : 2,
+                                          wide ? CWBVH_MAX_LEAF : max_binary_leaf, max_depth);
+        const RTCBounds all = bounds_of(prims);
+        if (wide) return write_wide_tree(out_.wide_nodes, top, all, emit_leaf, depth);
+        return BinaryWriter(out_.nodes).write(top, all, emit_leaf, depth);
+    }
+
+  private:
+    BvhBuild& out_;
+    EmbreeTreeBuilder embree_;
+};
+
+// Binary leaves of at most 4 triangles: a leaf is then at most 192 contiguous bytes.
 constexpr uint32_t kMaxTrianglesPerLeaf = 4;
-// Depth limits that keep depth(top) + depth(bottom) + 2 <= BVH_STACK_SIZE (64); Embree makes
-// its last levels balanced when a branch approaches the limit.
-constexpr uint32_t kMaxBottomDepth = 40;
-constexpr uint32_t kMaxTopDepth = 22;
+// Depth limits that keep depth(top) + depth(bottom) + 2 within the traversal stack of the
+// layout (BVH_STACK_SIZE, CWBVH_STACK_SIZE); Embree makes its last levels balanced when a
+// branch approaches the limit.
+uint32_t max_bottom_depth(BvhLayout layout) {
+    return layout == BvhLayout::wide ? 20 : 40;
+}
+uint32_t max_top_depth(BvhLayout layout) {
+    return layout == BvhLayout::wide ? 10 : 22;
+}
 
 // World box of an object box under an instance transform: the 8 corners transformed, padded by
 // 2^-20 of the largest coordinate so that the float rounding of the transform (a few ulp)
@@ -250,21 +176,19 @@ void build_one_level(const FlatScene& scene, Builder& builder, BvhBuild& out) {
             world.push_back(bt);
         }
     }
-    out.top_root = builder.build(out.nodes, std::move(prims), kMaxTrianglesPerLeaf, kMaxBottomDepth,
-                                 out.bottom_depth, [&](const uint32_t* ids, uint32_t n) {
-                                     const uint32_t first = uint32_t(out.triangles.size());
-                                     for (uint32_t k = 0; k < n; ++k)
-                                         out.triangles.push_back(world[ids[k]]);
-                                     return first;
-                                 });
+    out.top_root =
+        builder.build(std::move(prims), kMaxTrianglesPerLeaf, max_bottom_depth(out.layout),
+                      out.bottom_depth, [&](const uint32_t* ids, uint32_t n) {
+                          const uint32_t first = uint32_t(out.triangles.size());
+                          for (uint32_t k = 0; k < n; ++k) out.triangles.push_back(world[ids[k]]);
+                          return first;
+                      });
     out.one_level = true;
 }
 
-// One tree per mesh in object space and the top tree over the instances' world boxes.
+// One tree per mesh in object space and, behind them, the top tree over the instances' world
+// boxes.
 void build_two_level(const FlatScene& scene, Builder& builder, BvhBuild& out) {
-    // Node 0 is the top root; it is filled once the meshes' boxes are known.
-    out.nodes.push_back(empty_node());
-    out.top_root = 0;
     std::vector<vec3> mesh_lo(scene.meshes.size(), vec3(FLOAT_MAX)),
         mesh_hi(scene.meshes.size(), vec3(-FLOAT_MAX));
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
@@ -283,7 +207,7 @@ void build_two_level(const FlatScene& scene, Builder& builder, BvhBuild& out) {
         }
         uint32_t depth = 0;
         out.mesh_roots.push_back(builder.build(
-            out.nodes, std::move(prims), kMaxTrianglesPerLeaf, kMaxBottomDepth, depth,
+            std::move(prims), kMaxTrianglesPerLeaf, max_bottom_depth(out.layout), depth,
             [&](const uint32_t* ids, uint32_t n) {
                 const uint32_t first = uint32_t(out.triangles.size());
                 for (uint32_t i = 0; i < n; ++i) {
@@ -304,37 +228,47 @@ void build_two_level(const FlatScene& scene, Builder& builder, BvhBuild& out) {
         world_box(inst, mesh_lo[inst.mesh], mesh_hi[inst.mesh], lo, hi);
         instances.push_back(make_primitive(lo, hi, i));
     }
-    // The top tree is built into a scratch array and copied over node 0 and onwards: node 0
-    // must be its root so that the shader starts there.
-    std::vector<BvhNode> top;
-    builder.build(top, std::move(instances), 1, kMaxTopDepth, out.top_depth,
-                  [](const uint32_t* ids, uint32_t) { return ids[0]; });
-    // Re-base the top tree's inner references behind the mesh trees.
-    const uint32_t base = uint32_t(out.nodes.size()) - 1;
-    for (size_t k = 0; k < top.size(); ++k) {
-        BvhNode n = top[k];
-        if (n.count0 == 0 && n.ref0 != BVH_EMPTY) n.ref0 += base;
-        if (n.count1 == 0 && n.ref1 != BVH_EMPTY) n.ref1 += base;
-        if (k == 0)
-            out.nodes[0] = n;
-        else
-            out.nodes.push_back(n);
-    }
+    // Binary leaves name their instance directly (count 1); a wide leaf's items are
+    // consecutive records of the triangle array whose `instance` names one (cwbvh.h).
+    const bool wide = out.layout == BvhLayout::wide;
+    out.top_root = builder.build(std::move(instances), 1, max_top_depth(out.layout), out.top_depth,
+                                 [&](const uint32_t* ids, uint32_t n) {
+                                     if (!wide) return ids[0];
+                                     const uint32_t first = uint32_t(out.triangles.size());
+                                     for (uint32_t k = 0; k < n; ++k) {
+                                         BvhTriangle record{};
+                                         record.instance = ids[k];
+                                         out.triangles.push_back(record);
+                                     }
+                                     return first;
+                                 });
 }
 
 } // namespace
 
-BvhBuild build_bvh(const FlatScene& scene, uint32_t features) {
+BvhBuild build_bvh(const FlatScene& scene, uint32_t features, BvhLayout layout) {
     BvhBuild out;
-    Builder builder;
+    out.layout = layout;
+    Builder builder(out);
     if (feature_on(features, FEATURE_INSTANCING))
         build_two_level(scene, builder, out);
     else
         build_one_level(scene, builder, out);
-    if (out.top_depth + out.bottom_depth + 2 > BVH_STACK_SIZE)
+    const uint32_t stack = layout == BvhLayout::wide ? CWBVH_STACK_SIZE : BVH_STACK_SIZE;
+    if (out.top_depth + out.bottom_depth + 2 > stack)
         input_error("the scene's BVH is too deep for the GPU traversal stack ({} + {} levels)",
                     out.top_depth, out.bottom_depth);
     return out;
+}
+
+BvhLayout parse_bvh_layout(const std::string& name) {
+    if (name == "binary") return BvhLayout::binary;
+    if (name == "wide") return BvhLayout::wide;
+    input_error("unknown BVH layout '{}' (expected binary or wide)", name);
+}
+
+const char* bvh_layout_name(BvhLayout layout) {
+    return layout == BvhLayout::wide ? "wide" : "binary";
 }
 
 } // namespace tp

@@ -12,9 +12,27 @@
 // Generated from shaders/render_compute.comp (shaders/spirv.cmake).
 #include "render_compute.spv.h"
 #include "render_compute_debug.spv.h"
+#include "render_compute_wide.spv.h"
+#include "render_compute_wide_debug.spv.h"
 
 namespace tp {
 namespace {
+
+// The render shader's SPIR-V for a BVH layout: the module whose trace include traverses it.
+struct ComputeModules {
+    const uint32_t* spirv;
+    size_t bytes;
+    const uint32_t* debug_spirv;
+    size_t debug_bytes;
+};
+
+ComputeModules compute_modules(BvhLayout layout) {
+    if (layout == BvhLayout::wide)
+        return {tp_spirv_render_compute_wide, sizeof(tp_spirv_render_compute_wide),
+                tp_spirv_render_compute_wide_debug, sizeof(tp_spirv_render_compute_wide_debug)};
+    return {tp_spirv_render_compute, sizeof(tp_spirv_render_compute), tp_spirv_render_compute_debug,
+            sizeof(tp_spirv_render_compute_debug)};
+}
 
 // The compute shader over the BVH arrays it owns (slots 13 and 14).
 class ComputeTracer : public Tracer {
@@ -22,12 +40,16 @@ class ComputeTracer : public Tracer {
     // `debug`: also build the debug variant (record_debug_launch).
     // `features`: the feature mask the render shader is specialized to (shared/features.h).
     ComputeTracer(const VulkanContext& ctx, const BvhBuild& bvh, bool debug, uint32_t features)
+        : ComputeTracer(ctx, bvh, debug, features, compute_modules(bvh.layout)) {}
+
+    ComputeTracer(const VulkanContext& ctx, const BvhBuild& bvh, bool debug, uint32_t features,
+                  const ComputeModules& modules)
         : bvh_(upload_bvh(ctx, bvh)), top_root_(bvh.top_root),
-          program_(ctx, tp_spirv_render_compute, sizeof(tp_spirv_render_compute), BINDING_COUNT,
-                   sizeof(BatchParams), features, true) {
+          program_(ctx, modules.spirv, modules.bytes, BINDING_COUNT, sizeof(BatchParams), features,
+                   true) {
         if (debug) {
             const std::vector<uint32_t> spirv =
-                debug_spirv(tp_spirv_render_compute_debug, sizeof(tp_spirv_render_compute_debug));
+                debug_spirv(modules.debug_spirv, modules.debug_bytes);
             debug_program_ =
                 std::make_unique<ComputeProgram>(ctx, spirv.data(), spirv.size() * 4, BINDING_COUNT,
                                                  sizeof(BatchParams), features, false);
@@ -81,16 +103,17 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 } // namespace
 
 RenderResult render_compute(const VulkanContext& ctx, const FlatScene& scene,
-                            const RenderOptions& options) {
+                            const RenderOptions& options, BvhLayout layout) {
     // The BVH's shape follows the mask the shader is specialized to: one level without
     // instancing, two with it (bvh_builder.h, trace_bvh.glsl).
     const uint32_t features = render_feature_mask(scene, options.all_features);
     const auto t_build = std::chrono::steady_clock::now();
-    const BvhBuild bvh = build_bvh(scene, features);
+    const BvhBuild bvh = build_bvh(scene, features, layout);
     AccelStats accel;
     accel.build_time_s = seconds_since(t_build);
     accel.bytes = bvh.bytes();
     accel.extra["bvh_levels"] = bvh.one_level ? "1" : "2";
+    accel.extra["bvh_layout"] = bvh_layout_name(layout);
     const SceneBuffers sb =
         upload_scene(ctx, scene, seeded_params(scene, options.seed), bvh.mesh_roots, 0, features);
     ComputeTracer tracer(ctx, bvh, options.debug.active() || debug_spirv_overridden(), features);

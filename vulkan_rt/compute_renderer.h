@@ -1,14 +1,16 @@
 // Compute mode: the path tracer of shaders/render_compute.comp with software traversal of a
-// BVH built on the host (bvh_builder.h), run by the shared render loop (render_loop.h).
+// BVH built on the host in the given layout (bvh_builder.h), run by the shared render loop
+// (render_loop.h).
 #pragma once
 
 #include "render/render_options.h"
 #include "scene/flatten.h"
+#include "vulkan_rt/bvh_builder.h"
 #include "vulkan_rt/context.h"
 
 namespace tp {
 
 RenderResult render_compute(const VulkanContext& ctx, const FlatScene& scene,
-                            const RenderOptions& options);
+                            const RenderOptions& options, BvhLayout layout);
 
 } // namespace tp

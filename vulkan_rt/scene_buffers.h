@@ -31,7 +31,8 @@ SceneBuffers upload_scene(const VulkanContext& ctx, const FlatScene& scene,
                           const RenderParams& params, const std::vector<uint32_t>& mesh_bvh_roots,
                           VkBufferUsageFlags geometry_usage, uint32_t features = FEATURES_ALL);
 
-// Compute mode's BVH arrays, for slots BINDING_BVH_NODES and BINDING_BVH_TRIS.
+// Compute mode's BVH arrays, for slots BINDING_BVH_NODES (the nodes of the build's layout) and
+// BINDING_BVH_TRIS.
 struct BvhBuffers {
     Buffer nodes, triangles;
 };

@@ -42,10 +42,10 @@ const VulkanContext& open_context(const VulkanOptions& vk) {
 }
 
 RenderResult render_on(const VulkanContext& ctx, const FlatScene& scene,
-                       const RenderOptions& options) {
+                       const RenderOptions& options, BvhLayout layout) {
     try {
         return ctx.mode() == "pipeline" ? render_pipeline(ctx, scene, options)
-                                        : render_compute(ctx, scene, options);
+                                        : render_compute(ctx, scene, options, layout);
     } catch (...) {
         open_device.reset();
         throw;
@@ -57,7 +57,7 @@ RenderResult render_on(const VulkanContext& ctx, const FlatScene& scene,
 RenderResult render_vulkan(const FlatScene& scene, const RenderOptions& options,
                            const VulkanOptions& vk) {
     const VulkanContext& ctx = open_context(vk);
-    RenderResult r = render_on(ctx, scene, options);
+    RenderResult r = render_on(ctx, scene, options, vk.bvh);
     r.stats.scene_features = analyze_features(scene).names();
     r.stats.feature_mask = render_feature_mask(scene, options.all_features);
     r.stats.feature_variant = options.all_features ? "all" : "scene";

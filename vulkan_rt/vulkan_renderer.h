@@ -3,6 +3,7 @@
 
 #include "render/render_options.h"
 #include "scene/flatten.h"
+#include "vulkan_rt/bvh_builder.h"
 #include "vulkan_rt/device_info.h"
 
 #include <string>
@@ -13,6 +14,9 @@ namespace tp {
 struct VulkanOptions {
     std::string device;        // --device: index or name substring; empty: the best device
     std::string mode = "auto"; // --vk-mode: auto, compute or pipeline (resolve_vk_mode)
+    // --bvh: compute mode's BVH layout (bvh_builder.h). The default is the one that traced
+    // faster on every scene measured (BENCHMARKS.md, "h200-wide-bvh").
+    BvhLayout bvh = BvhLayout::binary;
     // --pipeline-stats: the driver's statistics of the render pipeline in RenderStats::pipeline
     // (pipeline_report.h); on a device without them a note on stderr, once per device opened.
     bool pipeline_statistics = false;

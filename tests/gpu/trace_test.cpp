@@ -1,8 +1,9 @@
 // The compute mode's ray queries (BVH built by vulkan_rt/bvh_builder.cpp, traversed by
-// shaders/trace_bvh.glsl) against Embree's on the same scenes: every bundled scene and a
-// generated one with hundreds of instances, each with both shapes of the BVH: two levels (the
-// all-features shader) and one level (the shader specialized to a mask without instancing,
-// which the builder then gives one world-space tree). Closest hit (instance, primitive,
+// shaders/trace_bvh.glsl, or in the compressed 8-wide layout by shaders/trace_cwbvh.glsl) against
+// Embree's on the same scenes: every bundled scene and a generated one with hundreds of
+// instances, each in both layouts and with both shapes of the BVH: two levels (the all-features
+// shader) and one level (the shader specialized to a mask without instancing, which the builder
+// then gives one world-space tree). Closest hit (instance, primitive,
 // distance) and occlusion must agree for random rays. Rays that meet two surfaces at the same
 // distance (coplanar faces, a shared edge) may name either: such a tie passes when the GPU's
 // triangle lies at Embree's distance along the ray. Up to 0.1 % may differ otherwise: float
@@ -12,6 +13,7 @@
 #include "gpu_harness.h"
 
 #include "trace_rays.spv.h"
+#include "trace_rays_wide.spv.h"
 
 #include "cpu_ref/embree_accel.h"
 #include "scene/flatten.h"
@@ -119,8 +121,8 @@ bool meets_at(const FlatScene& scene, const Ray& ray, const TraceResult& g, floa
 }
 
 // `features`: the mask the trace shader is specialized to, and so the shape of the BVH.
-void compare_with_embree(const FlatScene& scene, uint32_t features) {
-    const BvhBuild bvh = build_bvh(scene, features);
+void compare_with_embree(const FlatScene& scene, uint32_t features, BvhLayout layout) {
+    const BvhBuild bvh = build_bvh(scene, features, layout);
     REQUIRE(bvh.one_level == !feature_on(features, FEATURE_INSTANCING));
     const RenderParams params = scene.params;
     const SceneBuffers sb = upload_scene(gpu_context(), scene, params, bvh.mesh_roots, 0);
@@ -140,9 +142,12 @@ void compare_with_embree(const FlatScene& scene, uint32_t features) {
     BatchParams bp{};
     bp.sample_count = uint32_t(rays.size());
     bp.bvh_top_root = bvh.top_root;
-    const auto out = run_shader(tp_spirv_trace_rays, sizeof(tp_spirv_trace_rays), {bytes_of(rays)},
-                                {rays.size() * sizeof(TraceResult)}, &bp, sizeof(bp),
-                                uint32_t(rays.size() + 63) / 64, bound, features);
+    const bool wide = layout == BvhLayout::wide;
+    const auto out =
+        run_shader(wide ? tp_spirv_trace_rays_wide : tp_spirv_trace_rays,
+                   wide ? sizeof(tp_spirv_trace_rays_wide) : sizeof(tp_spirv_trace_rays),
+                   {bytes_of(rays)}, {rays.size() * sizeof(TraceResult)}, &bp, sizeof(bp),
+                   uint32_t(rays.size() + 63) / 64, bound, features);
     const std::vector<TraceResult> gpu = as_vector<TraceResult>(out[0]);
 
     const EmbreeAccel embree(scene);
@@ -185,9 +190,10 @@ void compare_with_embree(const FlatScene& scene, uint32_t features) {
     INFO(scene.name << ": " << hits << " of " << rays.size() << " rays hit; hit mismatches "
                     << hit_mismatch << ", primitive ties " << ties << ", occlusion mismatches "
                     << occl_mismatch << ", worst t error x cos(incidence) / (max|origin| + t) "
-                    << worst_t << ", BVH " << (bvh.one_level ? "one level, " : "two levels, ")
-                    << bvh.nodes.size() << " nodes, depth " << bvh.top_depth << " + "
-                    << bvh.bottom_depth);
+                    << worst_t << ", BVH " << bvh_layout_name(layout) << ", "
+                    << (bvh.one_level ? "one level, " : "two levels, ")
+                    << bvh.nodes.size() + bvh.wide_nodes.size() << " nodes, depth " << bvh.top_depth
+                    << " + " << bvh.bottom_depth);
     CHECK(hits > rays.size() / 10);
     CHECK(hit_mismatch <= allowed);
     CHECK(occl_mismatch <= allowed);
@@ -204,22 +210,26 @@ const uint32_t kOneLevel = FEATURES_ALL & ~FEATURE_INSTANCING;
 } // namespace
 
 TEST_CASE("GPU BVH traversal agrees with Embree on the bundled scenes", "[gpu]") {
-    for (const char* name : {"cornell", "cornell_glossy", "spheres", "furnace"}) {
-        SECTION(std::string(name) + ", two levels") {
-            compare_with_embree(bundled(name), kTwoLevels);
+    for (const char* name : {"cornell", "cornell_glossy", "cornell_spheres", "spheres", "furnace"})
+        for (BvhLayout layout : {BvhLayout::binary, BvhLayout::wide}) {
+            const std::string label = std::string(name) + ", " + bvh_layout_name(layout);
+            SECTION(label + ", two levels") {
+                compare_with_embree(bundled(name), kTwoLevels, layout);
+            }
+            SECTION(label + ", one level") {
+                compare_with_embree(bundled(name), kOneLevel, layout);
+            }
         }
-        SECTION(std::string(name) + ", one level") {
-            compare_with_embree(bundled(name), kOneLevel);
-        }
-    }
 }
 
 TEST_CASE("GPU BVH traversal agrees with Embree with hundreds of instances", "[gpu]") {
-    SECTION("two levels") {
-        compare_with_embree(instanced_scene(), kTwoLevels);
-    }
-    SECTION("one level") {
-        compare_with_embree(instanced_scene(), kOneLevel);
+    for (BvhLayout layout : {BvhLayout::binary, BvhLayout::wide}) {
+        SECTION(std::string(bvh_layout_name(layout)) + ", two levels") {
+            compare_with_embree(instanced_scene(), kTwoLevels, layout);
+        }
+        SECTION(std::string(bvh_layout_name(layout)) + ", one level") {
+            compare_with_embree(instanced_scene(), kOneLevel, layout);
+        }
     }
 }
 

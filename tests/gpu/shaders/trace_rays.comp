@@ -1,11 +1,16 @@
 #version 460
 // Traces one ray per invocation through the compute mode's trace include (the render shader's
-// bindings and BVH), for comparison with Embree: the closest hit and the occlusion answer.
+// bindings and BVH; with TP_TRACE_WIDE the compressed 8-wide BVH's), for comparison with Embree:
+// the closest hit and the occlusion answer.
 // batch.sample_count holds the number of rays.
 #extension GL_GOOGLE_include_directive : require
 
 #include "bindings.glsl"
+#ifdef TP_TRACE_WIDE
+#include "trace_cwbvh.glsl"
+#else
 #include "trace_bvh.glsl"
+#endif
 
 struct TraceResult {
     float t;
