@@ -1,0 +1,236 @@
+// The compressed 8-wide BVH (vulkan_rt/wide_bvh.h) as the host builds it, checked node by node
+// against the triangles it holds: every slot's decoded box p + 2^(e - 127) q, in exact
+// arithmetic, contains the exact bounds of everything below that slot (the quantization must
+// round outward: a box that cut off a sliver of a triangle would lose hits), every triangle is
+// reached exactly once, and the meta bytes, imask and child indices follow the format of
+// shaders/cwbvh.h. Over the bundled scenes, the bunny and the Buddha, and random triangle soups
+// with degenerate, tiny-far-away and range-rule-sized triangles. Host only: no device needed.
+#include "scene/flatten.h"
+#include "scene/load.h"
+#include "scene/world_vertex.h"
+#include "shared/features.h"
+#include "shared/surface.h"
+#include "support/test_paths.h"
+#include "vulkan_rt/bvh_builder.h"
+
+#include <catch2/catch.hpp>
+#include <fmt/format.h>
+#include <glm/gtc/matrix_transform.hpp>
+
+#include <filesystem>
+#include <random>
+#include <set>
+
+namespace tp {
+namespace {
+
+struct Box {
+    glm::dvec3 lo{std::numeric_limits<double>::max()}, hi{-std::numeric_limits<double>::max()};
+    void add(glm::dvec3 p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    void add(const Box& b) {
+        lo = glm::min(lo, b.lo);
+        hi = glm::max(hi, b.hi);
+    }
+};
+
+// Walks one tree, checking each node against its content; returns the exact bounds of the
+// node's content and collects the triangle-array items reached.
+class Walk {
+  public:
+    Walk(const BvhBuild& bvh, const FlatScene& scene) : bvh_(bvh), scene_(scene) {}
+
+    // `top`: the node is in the top tree of two levels, whose items are instance records.
+    Box node(uint32_t index, bool top, uint32_t level) {
+        REQUIRE(index < bvh_.wide_nodes.size());
+        depth = std::max(depth, level);
+        ++nodes;
+        const WideBvhNode& n = bvh_.wide_nodes[index];
+        Box all;
+        uint32_t inner_seen = 0, offset = 0;
+        for (uint32_t s = 0; s < 8; ++s) {
+            const uint8_t m = n.meta[s];
+            const bool inner = (n.imask >> s) & 1u;
+            if (m == 0) {
+                REQUIRE_FALSE(inner);
+                continue;
+            }
+            Box content;
+            if (inner) {
+                REQUIRE(m == (CWBVH_META_INNER | s));
+                content = node(n.child_base + inner_seen++, top, level + 1);
+            } else {
+                const uint32_t o = m & 0x1fu, bits = m >> 5;
+                REQUIRE((bits == 1 || bits == 3 || bits == 7));
+                const uint32_t count = bits == 1 ? 1 : bits == 3 ? 2 : 3;
+                // Leaves of one node are stored back to back in slot order and fit 24 bits.
+                REQUIRE(o == offset);
+                offset += count;
+                REQUIRE(offset <= 24);
+                for (uint32_t k = 0; k < count; ++k)
+                    content.add(item(n.triangle_base + o + k, top));
+            }
+            glm::dvec3 lo, hi;
+            wide_child_box(n, s, lo, hi);
+            INFO("node " << index << " slot " << s << ": decoded [" << lo.x << ' ' << lo.y << ' '
+                         << lo.z << "] .. [" << hi.x << ' ' << hi.y << ' ' << hi.z << "], content ["
+                         << content.lo.x << ' ' << content.lo.y << ' ' << content.lo.z << "] .. ["
+                         << content.hi.x << ' ' << content.hi.y << ' ' << content.hi.z << "]");
+            REQUIRE(glm::all(glm::lessThanEqual(lo, content.lo)));
+            REQUIRE(glm::all(glm::greaterThanEqual(hi, content.hi)));
+            all.add(content);
+        }
+        return all;
+    }
+
+    std::multiset<uint32_t> items; // triangle-array indices reached
+    std::multiset<uint32_t> instances;
+    uint32_t depth = 0, nodes = 0;
+
+  private:
+    Box item(uint32_t i, bool top) {
+        REQUIRE(i < bvh_.triangles.size());
+        const BvhTriangle& t = bvh_.triangles[i];
+        Box b;
+        if (!top) {
+            items.insert(i);
+            b.add(t.v0);
+            b.add(t.v1);
+            b.add(t.v2);
+            return b;
+        }
+        // An instance record: the box must hold the instance's world-space vertices.
+        REQUIRE(t.instance < scene_.instances.size());
+        instances.insert(t.instance);
+        const Instance& inst = scene_.instances[t.instance];
+        const MeshInfo& m = scene_.meshes[inst.mesh];
+        for (uint32_t v = 0; v < m.vertex_count; ++v)
+            b.add(instance_point_to_world(inst, scene_.positions[m.first_vertex + v]));
+        return b;
+    }
+
+    const BvhBuild& bvh_;
+    const FlatScene& scene_;
+};
+
+// Both shapes of the wide BVH of `scene` pass the walk; the one-level tree holds every
+// instance's triangles once, the two-level trees every mesh's once and the top every instance
+// (with triangles) once.
+void check_wide(const FlatScene& scene) {
+    INFO(scene.name);
+    {
+        const BvhBuild bvh = build_bvh(scene, FEATURES_ALL & ~FEATURE_INSTANCING, BvhLayout::wide);
+        REQUIRE(bvh.nodes.empty());
+        Walk w(bvh, scene);
+        w.node(bvh.top_root, false, 1);
+        size_t triangles = 0;
+        for (const Instance& inst : scene.instances)
+            triangles += scene.meshes[inst.mesh].triangle_count;
+        CHECK(w.items.size() == triangles);
+        CHECK(std::set<uint32_t>(w.items.begin(), w.items.end()).size() == triangles);
+        CHECK(w.nodes == bvh.wide_nodes.size());
+        CHECK(w.depth == bvh.bottom_depth);
+        CHECK(bvh.bottom_depth + 2 <= CWBVH_STACK_SIZE);
+    }
+    const BvhBuild bvh = build_bvh(scene, FEATURES_ALL, BvhLayout::wide);
+    Walk w(bvh, scene);
+    for (uint32_t m = 0; m < scene.meshes.size(); ++m) w.node(bvh.mesh_roots[m], false, 1);
+    size_t stored = 0, with_triangles = 0;
+    for (const MeshInfo& m : scene.meshes) stored += m.triangle_count;
+    for (const Instance& inst : scene.instances)
+        with_triangles += scene.meshes[inst.mesh].triangle_count > 0;
+    CHECK(w.items.size() == stored);
+    CHECK(std::set<uint32_t>(w.items.begin(), w.items.end()).size() == stored);
+    Walk top(bvh, scene);
+    top.node(bvh.top_root, true, 1);
+    CHECK(top.instances.size() == with_triangles);
+    CHECK(std::set<uint32_t>(top.instances.begin(), top.instances.end()).size() == with_triangles);
+    CHECK(w.nodes + top.nodes == bvh.wide_nodes.size());
+    CHECK(bvh.top_depth + bvh.bottom_depth + 2 <= CWBVH_STACK_SIZE);
+}
+
+FlatScene load(const std::string& path) {
+    std::vector<std::string> warnings;
+    return flatten(load_scene(path, warnings));
+}
+
+// `count` random triangles of size about `size` around points uniform in [-extent, extent]^3
+// shifted by `centre`, under `instances` random placements (scale and translation), then with
+// every `degenerate`-th triangle collapsed: to a point, or onto a line through its first vertex.
+FlatScene soup(uint32_t seed, uint32_t count, double centre, double extent, double size,
+               uint32_t instances, uint32_t degenerate) {
+    std::mt19937 rng(seed);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    Scene s;
+    s.path = fmt::format("soup {}", seed);
+    s.materials = {default_material()};
+    s.material_names = {"grey"};
+    Mesh mesh;
+    for (uint32_t i = 0; i < count; ++i) {
+        const glm::dvec3 c = centre + extent * glm::dvec3(u(rng), u(rng), u(rng));
+        for (int k = 0; k < 3; ++k)
+            mesh.positions.push_back(vec3(c + size * glm::dvec3(u(rng), u(rng), u(rng))));
+        mesh.triangles.push_back(uvec3(3 * i, 3 * i + 1, 3 * i + 2));
+    }
+    s.meshes = {mesh};
+    for (uint32_t i = 0; i < instances; ++i) {
+        Object o;
+        o.name = fmt::format("object {}", i);
+        if (i > 0)
+            o.transform = glm::translate(glm::scale(glm::mat4(1.0f), vec3(float(1.0 + u(rng)))),
+                                         vec3(float(extent * u(rng)), 0.0f, 0.0f));
+        s.objects.push_back(o);
+    }
+    s.camera.given = true;
+    s.camera.eye = vec3(float(centre));
+    s.camera.target = vec3(float(centre), float(centre), float(centre) - 1.0f);
+    s.settings.width = s.settings.height = 8;
+    FlatScene flat = flatten(s);
+    // Collapsed after flatten(), which would drop zero-area triangles: the builder must still
+    // hold them in boxes that contain them.
+    for (uint32_t i = 0; degenerate > 0 && i < flat.meshes[0].triangle_count; i += degenerate) {
+        const uvec3 t = flat.triangles[flat.meshes[0].first_triangle + i];
+        vec3* p = &flat.positions[flat.meshes[0].first_vertex];
+        p[t.y] = (i / degenerate) % 2 ? p[t.x] : p[t.x] + (p[t.x] - p[t.z]);
+        p[t.z] = p[t.x];
+    }
+    return flat;
+}
+
+} // namespace
+
+TEST_CASE("wide BVH: decoded boxes contain their content on the bundled scenes", "[wide_bvh]") {
+    for (const auto& entry : std::filesystem::directory_iterator(test::scenes_dir()))
+        if (entry.path().extension() == ".json") check_wide(load(entry.path().string()));
+}
+
+TEST_CASE("wide BVH: decoded boxes contain their content on the bunny and the Buddha",
+          "[wide_bvh]") {
+    const std::string dir = test::assets_dir();
+    for (const char* file : {"bunny/stanford-bunny.obj", "buddha/happy_buddha_112k.obj"}) {
+        const std::string path = dir + "/" + file;
+        if (!std::filesystem::exists(path)) {
+            WARN("skipped: " << path << " is missing (../shared/assets)");
+            continue;
+        }
+        check_wide(load(path));
+    }
+}
+
+TEST_CASE("wide BVH: decoded boxes contain their content on random soups", "[wide_bvh]") {
+    // Ordinary triangles; every 7th one degenerate.
+    check_wide(soup(1, 3000, 0.0, 10.0, 0.5, 3, 7));
+    // Triangles far smaller than the ulp of their coordinates' distance from the origin
+    // (1e-4 at 1e6, where floats are 0.0625 apart): boxes narrower than one step of any scale.
+    check_wide(soup(2, 2000, 1e6, 1.0, 1e-4, 2, 5));
+    // Coordinates up to the range rule's 2^36 (scene/flatten.h), mixed sizes, many degenerate.
+    check_wide(soup(3, 2000, 0.0, 0x1p35, 0x1p29, 1, 3));
+    // All triangles degenerate, half of them single points.
+    check_wide(soup(4, 500, -3.0, 2.0, 1.0, 1, 1));
+    // A few triangles: a tree that is one leaf.
+    check_wide(soup(5, 2, 0.0, 1.0, 1.0, 1, 0));
+}
+
+} // namespace tp
