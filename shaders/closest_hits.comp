@@ -1,13 +1,18 @@
 #version 460
 // Closest hits for vulkan_rt/ray_queries.h in compute mode: one ray per invocation through the
-// compute mode's trace include (trace_bvh.glsl, the render shader's bindings and BVH), the
+// compute mode's trace include (trace_bvh.glsl, or with TP_TRACE_WIDE trace_cwbvh.glsl; the
+// render shader's bindings and BVH), the
 // closest hit's distance back. On lavapipe every loop of a SIMD group stops silently once the group has
 // iterated 65535 times (shaders/accumulate.glsl); a probe loop after the trace reports whether
 // that budget held, so that a cut traversal is never mistaken for a leak.
 #extension GL_GOOGLE_include_directive : require
 
 #include "bindings.glsl"
+#ifdef TP_TRACE_WIDE
+#include "trace_cwbvh.glsl"
+#else
 #include "trace_bvh.glsl"
+#endif
 
 struct RayHit {
     float t;

@@ -87,8 +87,9 @@ std::vector<CaseResult> brdf_cases_glsl(const VulkanContext& ctx, const Size& s)
 
 // Rays aimed exactly at the shared edges and vertices of closed meshes: the icosphere, and the
 // bunny when `assets_dir` holds it (skipped otherwise). CPU: Embree; GPU: the compute mode's
-// BVH traversal (shaders/trace_bvh.glsl) on `ctx`; pipeline: the driver's traversal of the
-// render's TLAS (shaders/trace_rtx.glsl), on a `ctx` made for pipeline mode.
+// BVH traversals, binary and wide (shaders/trace_bvh.glsl, trace_cwbvh.glsl), on `ctx`;
+// pipeline: the driver's traversal of the render's TLAS (shaders/trace_rtx.glsl), on a `ctx`
+// made for pipeline mode.
 std::vector<CaseResult> watertight_cases_cpu(const Size& s, const std::string& assets_dir);
 std::vector<CaseResult> watertight_cases_gpu(const VulkanContext& ctx, const Size& s,
                                              const std::string& assets_dir);

@@ -247,9 +247,16 @@ std::vector<CaseResult> watertight_cases_cpu(const Size& s, const std::string& a
 
 std::vector<CaseResult> watertight_cases_gpu(const VulkanContext& ctx, const Size& s,
                                              const std::string& assets_dir) {
-    return run_cases(s, assets_dir, "vulkan", "compute", [&ctx](const RaySet& rs) {
-        return closest_hits_compute(ctx, rs.scene, rs.rays);
-    });
+    // Both BVH layouts of compute mode (--bvh binary, wide).
+    std::vector<CaseResult> out;
+    for (BvhLayout layout : {BvhLayout::binary, BvhLayout::wide}) {
+        const std::string mode = layout == BvhLayout::wide ? "compute/wide" : "compute";
+        for (CaseResult& r : run_cases(s, assets_dir, "vulkan", mode, [&](const RaySet& rs) {
+                 return closest_hits_compute(ctx, rs.scene, rs.rays, layout);
+             }))
+            out.push_back(std::move(r));
+    }
+    return out;
 }
 
 std::vector<CaseResult> watertight_cases_pipeline(const VulkanContext& ctx, const Size& s,

@@ -2,6 +2,7 @@
 
 #include "closest_hits_comp.spv.h"
 #include "closest_hits_rgen.spv.h"
+#include "closest_hits_wide_comp.spv.h"
 #include "shaders/interface.h"
 #include "vulkan_rt/accel_structures.h"
 #include "vulkan_rt/barriers.h"
@@ -26,8 +27,9 @@ struct RayHit {
 } // namespace
 
 ClosestHits closest_hits_compute(const VulkanContext& ctx, const FlatScene& scene,
-                                 const std::vector<Ray>& all_rays) {
-    const BvhBuild bvh = build_bvh(scene);
+                                 const std::vector<Ray>& all_rays, BvhLayout layout) {
+    const BvhBuild bvh = build_bvh(scene, FEATURES_ALL, layout);
+    const bool wide = layout == BvhLayout::wide;
     const SceneBuffers sb = upload_scene(ctx, scene, scene.params, bvh.mesh_roots, 0);
     const BvhBuffers bb = upload_bvh(ctx, bvh);
     const Buffer dummy(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
@@ -54,7 +56,8 @@ ClosestHits closest_hits_compute(const VulkanContext& ctx, const FlatScene& scen
             bp.bvh_top_root = bvh.top_root;
             bp.probe_iterations = LOOP_PROBE_ITERATIONS;
             const auto res = run_compute_shader(
-                ctx, tp_spirv_closest_hits_comp, sizeof(tp_spirv_closest_hits_comp),
+                ctx, wide ? tp_spirv_closest_hits_wide_comp : tp_spirv_closest_hits_comp,
+                wide ? sizeof(tp_spirv_closest_hits_wide_comp) : sizeof(tp_spirv_closest_hits_comp),
                 {bytes_of(rays)}, {rays.size() * sizeof(RayHit)}, &bp, sizeof(bp),
                 uint32_t(rays.size() + 63) / 64, bound);
             const std::vector<RayHit> hits = as_vector<RayHit>(res[0]);

@@ -147,6 +147,47 @@ TEST_CASE("with the same seed both backends trace the same paths", "[gpu]") {
     }
 }
 
+TEST_CASE("the wide BVH traces the CPU's paths and its images are consistent", "[gpu]") {
+    // --bvh wide (vulkan_rt/wide_bvh.h): the same-seed replay of the test above, and an
+    // independent-seed comparison as in the first test, on cornell (one-level BVH), spheres
+    // (two levels) and cornell_spheres (its glass and mirror spheres: the longest paths).
+    for (const char* scene : {"cornell", "spheres", "cornell_spheres"}) {
+        SECTION(scene) {
+            const std::string dir = temp_dir(std::string("wide-") + scene);
+            const std::string wide = " --vk-mode compute --bvh wide --width 24 --height 24";
+            REQUIRE(render(scene, "vulkan", dir, "same", "--spp 2 --seed 5" + wide).exit_code == 0);
+            REQUIRE(render(scene, "cpu", dir, "cpu", "--width 24 --height 24 --spp 2 --seed 5")
+                        .exit_code == 0);
+            const ExrImage a = read_exr(dir + "/same.exr"), b = read_exr(dir + "/cpu.exr");
+            size_t differ = 0, total = 0;
+            for (const char* ch : {"R", "G", "B"}) {
+                const std::vector<float>&va = a.channel(ch), &vb = b.channel(ch);
+                for (size_t i = 0; i < va.size(); ++i, ++total)
+                    differ += std::abs(va[i] - vb[i]) > 1e-3f * std::max(1.0f, std::abs(vb[i]));
+            }
+            INFO(differ << " of " << total << " pixel-channels differ"); // tolerance: see above
+            CHECK(differ <= total / 100);
+            const nlohmann::json stats = read_json(dir + "/same.json");
+            CHECK(stats["extra"]["bvh_layout"] == "wide");
+            CHECK(stats["accel_bytes"].get<uint64_t>() > 0);
+            if (!compare_available()) continue;
+            REQUIRE(render(scene, "vulkan", dir, "wide", "--spp 64 --seed 6" + wide).exit_code ==
+                    0);
+            REQUIRE(render(scene, "cpu", dir, "cpu64", "--width 24 --height 24 --spp 64 --seed 7")
+                        .exit_code == 0);
+            const ProcessResult cmp = run(
+                twinpath(fmt::format("compare {} {} --alpha 0.01", shell_quote(dir + "/wide.exr"),
+                                     shell_quote(dir + "/cpu64.exr"))));
+            INFO(cmp.out);
+            CHECK(cmp.exit_code == 0);
+        }
+    }
+    const std::string dir = temp_dir("wide-bad");
+    const ProcessResult bad = render("cornell", "vulkan", dir, "x", "--spp 1 --bvh quad");
+    CHECK(bad.exit_code == 2);
+    CHECK_THAT(bad.out, Catch::Contains("--bvh"));
+}
+
 TEST_CASE("bad --device and --vk-mode fail with exit code 2 and a clear message", "[gpu]") {
     const std::string dir = temp_dir("vk-bad");
     const ProcessResult index = render("cornell", "vulkan", dir, "a", "--spp 1 --device 99");
