@@ -22,7 +22,7 @@ scene_args() { if [ $1 = sponza ]; then echo "--eye -12,2.5,0 --target 6,4.5,0 -
 T=${T:-2.5}
 SCENES=${SCENES:-cornell cornell_spheres furnace bunny buddhas buddhas_instanced rtxon sponza}
 for s in $SCENES; do
-  for v in binary wide pipeline; do
+  for v in ${VARIANTS:-binary wide pipeline}; do
     if [ $v = pipeline ]; then m="--vk-mode pipeline"; else m="--vk-mode compute --bvh $v"; fi
     /usr/bin/time -f "%e" -o $R/$s-$v.time $tp render $(scene_path $s) $(scene_args $s) --backend vulkan $m \
       --width 1920 --height 1080 --spp 100000 --time-limit $T --seed 1 -o /tmp/$s-$v.exr --stats $R/$s-$v.json > $R/$s-$v.log 2>&1
