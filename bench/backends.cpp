@@ -36,9 +36,10 @@ std::vector<Backend> expand_backends(const std::vector<std::string>& requested,
         const std::string mode = r == "vulkan"                ? ""
                                  : r.rfind("vulkan:", 0) == 0 ? r.substr(7)
                                                               : "-";
-        if (mode == "-" || (!mode.empty() && mode != "compute" && mode != "pipeline"))
-            input_error("--backends: unknown backend '{}' (expected cpu, vulkan, vulkan:compute "
-                        "or vulkan:pipeline)",
+        if (mode == "-" ||
+            (!mode.empty() && mode != "compute" && mode != "compute-wide" && mode != "pipeline"))
+            input_error("--backends: unknown backend '{}' (expected cpu, vulkan, vulkan:compute, "
+                        "vulkan:compute-wide or vulkan:pipeline)",
                         r);
         DeviceInfo device;
         try {
@@ -49,9 +50,11 @@ std::vector<Backend> expand_backends(const std::vector<std::string>& requested,
         }
         const std::string where = fmt::format("{} ({})", device.name, device.driver);
         const std::vector<std::string> modes = device.modes();
+        // compute-wide (compute mode over the wide BVH) only when asked for by name.
+        const std::string device_mode = mode == "compute-wide" ? "compute" : mode;
         for (const std::string& m : modes)
-            if (mode.empty() || m == mode) add({"vulkan", m, where});
-        if (!mode.empty() && std::find(modes.begin(), modes.end(), mode) == modes.end())
+            if (mode.empty() || m == device_mode) add({"vulkan", mode.empty() ? m : mode, where});
+        if (!mode.empty() && std::find(modes.begin(), modes.end(), device_mode) == modes.end())
             skipped.push_back({r, fmt::format("{} does not offer {} mode", device.name, mode)});
     }
     return out;
@@ -60,9 +63,7 @@ std::vector<Backend> expand_backends(const std::vector<std::string>& requested,
 RenderResult render_on(const Backend& backend, const FlatScene& scene, const RenderOptions& options,
                        const std::string& device_selector, bool pipeline_statistics) {
     if (backend.name == "cpu") return render_cpu(scene, options);
-    VulkanOptions vk;
-    vk.device = device_selector;
-    vk.mode = backend.mode;
+    VulkanOptions vk = backend_vulkan_options(backend.mode, device_selector);
     vk.pipeline_statistics = pipeline_statistics;
     return render_vulkan(scene, options, vk);
 }

@@ -60,7 +60,8 @@ Subcommand add_bench_command(CLI::App& app) {
         ->delimiter(',')
         ->capture_default_str();
     c->add_option("--backends", o.backends,
-                  "cpu, vulkan (every mode of the device), vulkan:compute, vulkan:pipeline")
+                  "cpu, vulkan (every mode of the device), vulkan:compute, vulkan:compute-wide "
+                  "(--bvh wide), vulkan:pipeline")
         ->delimiter(',')
         ->capture_default_str();
     c->add_option("--device", o.device, "Vulkan device index or name substring");

@@ -37,10 +37,7 @@ Engine cpu_engine(uint32_t threads) {
 
 Engine vulkan_engine(const std::string& mode, const std::string& device) {
     return {"vulkan", mode, [mode, device](const FlatScene& f, const RenderOptions& o) {
-                VulkanOptions vk;
-                vk.mode = mode;
-                vk.device = device;
-                return render_vulkan(f, o, vk);
+                return render_vulkan(f, o, backend_vulkan_options(mode, device));
             }};
 }
 

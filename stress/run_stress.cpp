@@ -111,9 +111,11 @@ int run_stress(const StressOptions& o) {
         try {
             const std::vector<DeviceInfo> devices = list_vulkan_devices();
             const DeviceInfo& d = select_device(devices, o.device);
-            for (const std::string m : {"compute", "pipeline"}) {
-                if (!want.empty() && want != m) continue;
-                const std::string missing = m == "compute" ? d.compute_missing : d.pipeline_missing;
+            // compute-wide (compute mode over the wide BVH) only when asked for by name.
+            for (const std::string m : {"compute", "compute-wide", "pipeline"}) {
+                if (want.empty() ? m == "compute-wide" : want != m) continue;
+                const std::string missing =
+                    m == "pipeline" ? d.pipeline_missing : d.compute_missing;
                 if (missing.empty())
                     modes.push_back(m);
                 else
@@ -125,7 +127,8 @@ int run_stress(const StressOptions& o) {
         }
         for (const std::string& m : modes) {
             try {
-                {
+                // Compute mode's ray queries cover both BVH layouts (watertight_cases_gpu).
+                if (m != "compute-wide") {
                     const VulkanContext ctx(o.device, m);
                     if (m == "compute") {
                         add(brdf_cases_glsl(ctx, s));

@@ -54,6 +54,14 @@ RenderResult render_on(const VulkanContext& ctx, const FlatScene& scene,
 
 } // namespace
 
+VulkanOptions backend_vulkan_options(const std::string& mode, const std::string& device) {
+    VulkanOptions vk;
+    vk.device = device;
+    vk.mode = mode == "compute-wide" ? "compute" : mode;
+    if (mode == "compute-wide") vk.bvh = BvhLayout::wide;
+    return vk;
+}
+
 RenderResult render_vulkan(const FlatScene& scene, const RenderOptions& options,
                            const VulkanOptions& vk) {
     const VulkanContext& ctx = open_context(vk);

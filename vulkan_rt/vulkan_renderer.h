@@ -22,6 +22,11 @@ struct VulkanOptions {
     bool pipeline_statistics = false;
 };
 
+// The options of a Vulkan backend as `twinpath bench --backends vulkan:MODE` and the stress suite
+// name it: MODE is auto, compute, pipeline, or compute-wide (compute mode over the compressed
+// 8-wide BVH, `render --vk-mode compute --bvh wide`).
+VulkanOptions backend_vulkan_options(const std::string& mode, const std::string& device);
+
 // Renders on the selected device in the mode the request resolves to there (RenderStats::mode
 // says which ran). Throws RuntimeError (exit code 3) for Vulkan failures, for pipeline mode on a
 // device without it, and when the validation layer reported anything (validation.h). The device

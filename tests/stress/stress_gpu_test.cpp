@@ -101,4 +101,13 @@ TEST_CASE("stress GPU: same-seed renders match the CPU", "[stress][gpu]") {
     require_all(twin_cases(cpu_engine(), gpu(), gpu_size()));
 }
 
+// The geometry cases and the same-seed replay again over the compressed 8-wide BVH (--bvh wide):
+// its quantized boxes must not lose the far, huge, flat and degenerate triangles either.
+TEST_CASE("stress GPU: geometry and same-seed renders with the wide BVH", "[stress][gpu]") {
+    const Engine wide = vulkan_engine("compute-wide");
+    require_all(range_cases(wide, gpu_size()));
+    require_all(degenerate_cases(wide, gpu_size()));
+    require_all(twin_cases(cpu_engine(), wide, gpu_size()));
+}
+
 } // namespace tp::stress
