@@ -4,16 +4,15 @@
 // bench/renderer_version.cmake).
 #pragma once
 
-#include "scene/flatten.h"
+#include "scene/scene_hash.h"
 
 #include <cstdint>
 #include <string>
 
 namespace tp::bench {
 
-// 64-bit FNV-1a (Fowler, Noll & Vo) over the scene's arrays, each preceded by its length.
-// The shared structs have no implicit padding (shared/types.h pins their layout), so their
-// bytes are their values. Names are left out: they do not change the image.
+// 64-bit FNV-1a over the render parameters, spp and the scene's content (scene/scene_hash.h).
+// Names are left out: they do not change the image.
 uint64_t hash_flat_scene(const FlatScene& scene);
 
 // "0.1.0+<16 hex digits>".

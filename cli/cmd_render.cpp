@@ -7,6 +7,7 @@
 #include "compare/colormap.h"
 #include "cpu_ref/cpu_renderer.h"
 #include "image/png_io.h"
+#include "render/render_header.h"
 #include "scene/flatten.h"
 #include "scene/load.h"
 #include "util/error.h"
@@ -31,7 +32,7 @@ struct RenderArgs {
     std::optional<std::string> bvh; // --bvh binary|wide (compute mode's BVH layout)
     std::optional<uint32_t> spp, width, height, min_depth, max_depth;
     double time_limit = 0;
-    uint32_t seed = 0;
+    uint32_t seed = 0, sample_offset = 0;
     uint32_t threads = 0;
     std::string device;
     std::string eye, target, up;
@@ -78,18 +79,6 @@ std::vector<uint8_t> heat_map(const std::vector<float>& cost) {
     return rgb;
 }
 
-ExrImage render_image(const RenderResult& r) {
-    ExrImage img = r.film.to_exr();
-    img.integers["twinpath:spp"] = r.stats.spp;
-    img.integers["twinpath:seed"] = r.stats.seed;
-    img.strings["twinpath:backend"] =
-        r.stats.mode.empty() ? r.stats.backend : r.stats.backend + "/" + r.stats.mode;
-    img.strings["twinpath:device"] = r.stats.device;
-    img.strings["twinpath:scene"] = r.stats.scene;
-    img.reals["twinpath:render_time_s"] = r.stats.wall_time_s;
-    return img;
-}
-
 int run_render(const RenderArgs& a) {
     std::vector<std::string> warnings;
     Scene scene = load_scene(a.scene, warnings);
@@ -124,14 +113,18 @@ int run_render(const RenderArgs& a) {
                         flat.params.camera.width, flat.params.camera.height);
         debug.pixel_x = p.x;
         debug.pixel_y = p.y;
-        if (debug.sample && *debug.sample >= flat.spp)
-            input_error("--debug-sample {}: the render has samples 0 to {}", *debug.sample,
-                        flat.spp - 1);
+        if (debug.sample &&
+            (*debug.sample < a.sample_offset || *debug.sample - a.sample_offset >= flat.spp))
+            input_error("--debug-sample {}: the render has samples {} to {}", *debug.sample,
+                        a.sample_offset, uint64_t(a.sample_offset) + flat.spp - 1);
         if (debug.integrator != INTEGRATOR_PATH)
             input_error("--debug-log records the path integrator, not --integrator {}",
                         a.integrator);
     }
 
+    if (uint64_t(a.sample_offset) + flat.spp > (uint64_t(1) << 32))
+        input_error("--sample-offset {} --spp {}: sample indices end at 2^32", a.sample_offset,
+                    flat.spp);
     const std::string out =
         a.output ? *a.output : std::filesystem::path(scene.path).stem().string() + ".exr";
     std::vector<std::pair<std::string, std::string>> outputs = {{"-o", out}};
@@ -151,6 +144,7 @@ int run_render(const RenderArgs& a) {
     RenderOptions opt;
     opt.stop = &interrupt_flag();
     opt.seed = a.seed;
+    opt.sample_offset = a.sample_offset;
     opt.time_limit_s = a.time_limit;
     opt.threads = a.threads;
     opt.all_features = a.features == "all";
@@ -170,11 +164,7 @@ int run_render(const RenderArgs& a) {
     }
     result.stats.scene = scene.path;
 
-    ExrImage image = render_image(result);
-    if (debug.integrator != INTEGRATOR_PATH)
-        image.strings["twinpath:integrator"] = integrator_name(debug.integrator);
-    if (debug.aov) add_aov_layers(image, result.debug.aovs);
-    write_exr(out, image);
+    write_exr(out, render_exr(result, flat, opt));
     if (a.png) {
         const ExrImage img = result.film.to_exr();
         write_png(*a.png, img.width, img.height,
@@ -236,6 +226,8 @@ Subcommand add_render_command(CLI::App& app) {
     c->add_option("--time-limit", a->time_limit, "Stop after this many seconds (whole passes)")
         ->check(number_in(0.0, 1e9));
     c->add_option("--seed", a->seed, "Random seed");
+    c->add_option("--sample-offset", a->sample_offset,
+                  "First sample index: render samples K..K+spp-1 (docs/farm.md)");
     c->add_option("--width", a->width, "Image width")->check(CLI::Range(1u, 16384u));
     c->add_option("--height", a->height, "Image height")->check(CLI::Range(1u, 16384u));
     c->add_option("--min-depth", a->min_depth, "Bounces before Russian roulette")
@@ -243,7 +235,8 @@ Subcommand add_render_command(CLI::App& app) {
     c->add_option("--max-depth", a->max_depth, "Maximum scattering events")
         ->check(CLI::Range(1u, 100000u));
     c->add_option("--threads", a->threads, "CPU threads (0: all)")->check(CLI::Range(0u, 4096u));
-    c->add_option("--device", a->device, "Vulkan device index or name substring");
+    c->add_option("--device", a->device,
+                  "Vulkan device index or name substring; all, or a list: several at once");
     c->add_option("--eye", a->eye, "Camera position X,Y,Z");
     c->add_option("--target", a->target, "Camera target X,Y,Z");
     c->add_option("--up", a->up, "Camera up vector X,Y,Z");

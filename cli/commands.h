@@ -15,6 +15,7 @@ struct Subcommand {
 
 Subcommand add_render_command(CLI::App& app);
 Subcommand add_compare_command(CLI::App& app);
+Subcommand add_merge_command(CLI::App& app);
 Subcommand add_info_command(CLI::App& app);
 Subcommand add_bench_command(CLI::App& app);
 Subcommand add_pathdiff_command(CLI::App& app);

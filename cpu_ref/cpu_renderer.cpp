@@ -79,8 +79,10 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
     double snapshot_seconds = 0; // film copies for checkpoints: not rendering time
     uint32_t done = 0;
     while (done < scene.spp) {
-        const uint32_t s0 = done,
-                       s1 = std::min(options.next_stop(done, scene.spp), done + pass_spp);
+        // Samples [s0, s1) of the render are samples [K + s0, K + s1) of the sequence.
+        const uint32_t K = options.sample_offset;
+        const uint32_t s0 = K + done,
+                       s1 = K + std::min(options.next_stop(done, scene.spp), done + pass_spp);
         tbb::combinable<TileCounters> counters;
         tbb::parallel_for(
             tbb::blocked_range<uint32_t>(0, tiles_x * tiles_y),
@@ -105,7 +107,7 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
             st.rays += c.rays;
             st.nan_samples += c.nan;
         });
-        done = s1;
+        done = s1 - K;
         if (options.progress) options.progress(double(done) / double(scene.spp));
         if (options.on_checkpoint && options.is_checkpoint(done)) {
             const auto t_snap = std::chrono::steady_clock::now();
@@ -133,7 +135,9 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
     }
     if (debug.log) {
         RayCounts ignored;
-        for (uint32_t s = debug.first_sample(); s < std::min(debug.end_sample(done), done); ++s)
+        const uint32_t K = options.sample_offset;
+        for (uint32_t s = debug.first_sample(K); s < std::min(debug.end_sample(K, done), K + done);
+             ++s)
             integrator.record(debug.pixel_x, debug.pixel_y, s, ignored, result.debug.records);
     }
     return result;

@@ -52,7 +52,8 @@ PixelCounts render_pixel(uvec2 pixel) {
     uint n = 0u;
     uint p = pixel.y * params.camera.width + pixel.x;
     uint end = batch.sample_begin + batch.sample_count;
-    uint s = accum[p].next_sample;
+    // next_sample is 0 in a fresh accumulator, below a --sample-offset render's first sample.
+    uint s = max(accum[p].next_sample, batch.sample_begin);
     for (; s < end; ++s) {
         RayCounts rays;
         rays.camera = 0u;

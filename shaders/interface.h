@@ -43,8 +43,10 @@ const uint SPEC_SCENE_FEATURES = 0u; // uint: the FEATURE_* mask the path loop i
 // ---- push constants of one dispatch ----------------------------------------------------------
 // The dispatch covers rows [row_begin, row_end) of the image, every column, and samples
 // [sample_begin, sample_begin + sample_count) of each of those pixels.
-// A pixel continues from its own next_sample (PixelAccum), which equals sample_begin unless a
-// dispatch of this batch was cut short (accumulate.glsl, loop budget) and is being repeated.
+// A pixel continues from max(next_sample, sample_begin) (PixelAccum): next_sample equals
+// sample_begin unless a dispatch of this batch was cut short (accumulate.glsl, loop budget) and
+// is being repeated, or is still 0 before the first batch of a render that starts at a
+// --sample-offset.
 struct BatchParams {
     uint sample_begin;
     uint sample_count;

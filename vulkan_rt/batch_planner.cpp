@@ -4,8 +4,10 @@
 
 namespace tp {
 
-BatchPlanner::BatchPlanner(uint32_t width, uint32_t height, uint32_t spp, double target_seconds)
-    : width_(width), height_(height), spp_(spp), stop_(spp), target_(target_seconds) {}
+BatchPlanner::BatchPlanner(uint32_t width, uint32_t height, uint32_t spp, double target_seconds,
+                           uint64_t initial_work)
+    : width_(width), height_(height), spp_(spp), stop_(spp), target_(target_seconds),
+      work_(std::max<uint64_t>(initial_work, 1)) {}
 
 Batch BatchPlanner::next() const {
     const uint64_t pixels = uint64_t(width_) * height_;

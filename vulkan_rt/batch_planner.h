@@ -20,7 +20,10 @@ struct Batch {
 
 class BatchPlanner {
   public:
-    BatchPlanner(uint32_t width, uint32_t height, uint32_t spp, double target_seconds);
+    // `initial_work`: pixel-samples of the first submission; a render of several ranges passes
+    // on what the previous range's planner learnt (work()).
+    BatchPlanner(uint32_t width, uint32_t height, uint32_t spp, double target_seconds,
+                 uint64_t initial_work = kInitialWork);
 
     bool done() const { return samples_done_ >= stop_; }
     // Ends the render (for now) after `spp` samples per pixel: a checkpoint; at most the total.
@@ -43,7 +46,7 @@ class BatchPlanner {
     uint32_t width_, height_, spp_;
     uint32_t stop_;
     double target_;
-    uint64_t work_ = kInitialWork;
+    uint64_t work_;
     uint32_t max_samples_ = kMaxSamplesPerBatch;
     uint32_t samples_done_ = 0;
     uint32_t row_ = 0;          // next row of the current pass

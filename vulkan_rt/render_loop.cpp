@@ -29,13 +29,13 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 class BatchSession {
   public:
     BatchSession(const VulkanContext& ctx, const FlatScene& scene, const SceneBuffers& sb,
-                 Tracer& tracer, const DebugRequest& debug)
-        : ctx_(ctx), tracer_(tracer), width_(scene.params.camera.width),
-          height_(scene.params.camera.height),
+                 Tracer& tracer, const DebugRequest& debug, uint32_t sample_offset)
+        : ctx_(ctx), tracer_(tracer), sample_offset_(sample_offset),
+          width_(scene.params.camera.width), height_(scene.params.camera.height),
           accum_(ctx, VkDeviceSize(width_) * height_ * sizeof(PixelAccum), kStorage, false),
           counters_(ctx, kCounterBytes, kStorage, false),
           host_counters_(ctx, kCounterBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true),
-          debug_capacity_(debug_capacity(scene, debug)),
+          debug_capacity_(debug_capacity(scene, debug, sample_offset)),
           debug_(ctx, sizeof(DebugHeader) + VkDeviceSize(debug_capacity_) * sizeof(PathVertex),
                  kStorage, false),
           aov_(ctx,
@@ -69,11 +69,14 @@ class BatchSession {
     uint32_t submissions() const { return submissions_; }
     uint32_t repeats() const { return repeats_; }
 
+    // The first sample of the range that the batches' sample_begin counts from.
+    void set_sample_offset(uint32_t first) { sample_offset_ = first; }
+
     // Traces the batch to completion. Dispatches are repeated while some pixels stopped early
     // (accumulate.glsl, loop budget); each repetition resumes them where they stopped. Returns
     // whether that happened.
     bool run(const Batch& b) {
-        params_.sample_begin = b.sample_begin;
+        params_.sample_begin = sample_offset_ + b.sample_begin;
         params_.sample_count = b.sample_count;
         params_.row_begin = b.row_begin;
         params_.row_end = b.row_end;
@@ -154,10 +157,12 @@ class BatchSession {
     static constexpr VkDeviceSize kCounterBytes = COUNTER_WORDS * sizeof(uint32_t);
     // Path-log records the GPU can hold: every logged sample's longest path, at most 2^16
     // (18 MiB); further records are counted as dropped.
-    static uint32_t debug_capacity(const FlatScene& scene, const DebugRequest& d) {
+    static uint32_t debug_capacity(const FlatScene& scene, const DebugRequest& d,
+                                   uint32_t sample_offset) {
         if (!d.log) return 1;
-        const uint64_t n = uint64_t(d.end_sample(scene.spp) - d.first_sample()) *
-                           path_log_records_per_sample(scene.params.max_depth);
+        const uint64_t n =
+            uint64_t(d.end_sample(sample_offset, scene.spp) - d.first_sample(sample_offset)) *
+            path_log_records_per_sample(scene.params.max_depth);
         return uint32_t(std::clamp<uint64_t>(n, 1, 1u << 16));
     }
 
@@ -219,6 +224,7 @@ class BatchSession {
 
     const VulkanContext& ctx_;
     Tracer& tracer_;
+    uint32_t sample_offset_;
     uint32_t width_, height_;
     Buffer accum_, counters_, host_counters_;
     uint32_t debug_capacity_;
@@ -256,45 +262,62 @@ RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
     for (const auto& [key, value] : accel.extra) st.extra[key] = value;
     st.pipeline = accel.pipeline;
 
-    BatchSession session(ctx, scene, scene_buffers, tracer, options.debug);
-    BatchPlanner planner(st.width, st.height, scene.spp, kTargetSubmitSeconds);
-    planner.stop_at(options.next_stop(0, scene.spp));
+    BatchSession session(ctx, scene, scene_buffers, tracer, options.debug, options.sample_offset);
     const auto t0 = std::chrono::steady_clock::now();
     double snapshot_seconds = 0; // read-backs for checkpoints: not rendering time
-    while (!planner.done()) {
-        const Batch b = planner.next();
-        const auto t_batch = std::chrono::steady_clock::now();
-        const bool cut_short = session.run(b);
-        planner.completed(b, seconds_since(t_batch), cut_short);
-        if (options.progress) options.progress(planner.fraction_done());
-        if (planner.done() && options.on_checkpoint &&
-            options.is_checkpoint(planner.samples_done())) {
-            const auto t_snap = std::chrono::steady_clock::now();
-            RenderResult snapshot{Film(), st, {}};
-            snapshot.stats.wall_time_s = seconds_since(t0) - snapshot_seconds;
-            snapshot.stats.gpu_time_s = session.gpu_seconds();
-            snapshot.stats.spp = planner.samples_done();
-            snapshot.film = session.read_back(snapshot.stats);
-            options.on_checkpoint(snapshot);
-            snapshot_seconds += seconds_since(t_snap);
+    uint64_t work = BatchPlanner::kInitialWork;
+    bool stopped = false;
+    // One range, [sample_offset, sample_offset + spp), or those options.sample_source grants.
+    while (!stopped) {
+        RenderOptions::SampleGrant range{options.sample_offset, scene.spp};
+        if (options.sample_source) {
+            const double s = seconds_since(t0);
+            range = options.sample_source(s > 0 ? double(st.spp) * st.width * st.height / s : 0);
+            if (range.count == 0) break;
         }
-        planner.stop_at(options.next_stop(planner.samples_done(), scene.spp));
-        if (planner.at_pass_boundary() &&
-            ((options.time_limit_s > 0 && seconds_since(t0) >= options.time_limit_s) ||
-             options.stop_requested()))
-            break;
+        session.set_sample_offset(range.begin);
+        BatchPlanner planner(st.width, st.height, range.count, kTargetSubmitSeconds, work);
+        planner.stop_at(options.next_stop(0, range.count));
+        while (!planner.done()) {
+            const Batch b = planner.next();
+            const auto t_batch = std::chrono::steady_clock::now();
+            const bool cut_short = session.run(b);
+            planner.completed(b, seconds_since(t_batch), cut_short);
+            if (options.progress) options.progress(planner.fraction_done());
+            if (planner.done() && options.on_checkpoint &&
+                options.is_checkpoint(planner.samples_done())) {
+                const auto t_snap = std::chrono::steady_clock::now();
+                RenderResult snapshot{Film(), st, {}};
+                snapshot.stats.wall_time_s = seconds_since(t0) - snapshot_seconds;
+                snapshot.stats.gpu_time_s = session.gpu_seconds();
+                snapshot.stats.spp = planner.samples_done();
+                snapshot.film = session.read_back(snapshot.stats);
+                options.on_checkpoint(snapshot);
+                snapshot_seconds += seconds_since(t_snap);
+            }
+            planner.stop_at(options.next_stop(planner.samples_done(), range.count));
+            stopped = (options.time_limit_s > 0 && seconds_since(t0) >= options.time_limit_s) ||
+                      options.stop_requested();
+            if (planner.at_pass_boundary() && stopped) break;
+        }
+        work = planner.work();
+        st.spp += planner.samples_done();
+        if (planner.samples_done() > 0)
+            st.sample_ranges.push_back(
+                {options.seed, range.begin, uint64_t(range.begin) + planner.samples_done()});
+        if (!options.sample_source) break;
     }
     st.wall_time_s = seconds_since(t0) - snapshot_seconds;
     st.gpu_time_s = session.gpu_seconds();
-    st.spp = planner.samples_done();
     st.extra["submissions"] = std::to_string(session.submissions());
     st.extra["repeated_submissions"] = std::to_string(session.repeats());
     result.film = session.read_back(st);
     const DebugRequest& d = options.debug;
     if (d.aov) result.debug.aovs = session.aovs();
+    const uint32_t K = options.sample_offset;
     if (d.log)
-        session.path_log(d.first_sample(), std::min(d.end_sample(st.spp), st.spp), d.pixel_y,
-                         result.debug);
+        session.path_log(d.first_sample(K), std::min(d.end_sample(K, st.spp), K + st.spp),
+                         d.pixel_y, result.debug);
     return result;
 }
 

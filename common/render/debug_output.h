@@ -21,9 +21,11 @@ struct DebugRequest {
     uint32_t pixel_x = 0, pixel_y = 0;     // --debug-pixel
     std::optional<uint32_t> sample;        // --debug-sample; none: every sample of the render
 
-    // The samples a path log covers: [first, end).
-    uint32_t first_sample() const { return sample ? *sample : 0u; }
-    uint32_t end_sample(uint32_t spp) const { return sample ? *sample + 1u : spp; }
+    // The samples a path log of a render of samples [begin, begin + spp) covers: [first, end).
+    uint32_t first_sample(uint32_t begin) const { return sample ? *sample : begin; }
+    uint32_t end_sample(uint32_t begin, uint32_t spp) const {
+        return sample ? *sample + 1u : begin + spp;
+    }
     // Anything that needs the debug variant of the path loop (cpu: its instantiation; Vulkan: the
     // TP_DEBUG_SHADER module).
     bool active() const { return integrator != INTEGRATOR_PATH || aov || log; }

@@ -17,6 +17,21 @@ struct RenderResult;
 
 struct RenderOptions {
     uint32_t seed = 0;
+    // `--sample-offset K`: the render traces samples K, K+1, ... of every pixel (of the seed's
+    // sequence) instead of 0, 1, ...; the scene's spp says how many. The random numbers depend
+    // only on (seed, pixel, sample, dimension) (shared/rng.h), so renders of disjoint ranges
+    // are disjoint sets of samples of one estimator and merge exactly (docs/farm.md). Counts,
+    // checkpoints and progress stay relative to K. K + spp must fit in 32 bits.
+    uint32_t sample_offset = 0;
+    // When set, the render takes its samples in ranges from here instead of tracing
+    // [sample_offset, sample_offset + spp) (the Vulkan engine's --device all shares one render's
+    // samples among devices this way, vulkan_rt/sample_share.h). It is called with the render's
+    // rate so far (pixel-samples per second; 0 before its first range) and returns the next
+    // range, or a count of 0 when none is left. Successive ranges ascend.
+    struct SampleGrant {
+        uint32_t begin = 0, count = 0;
+    };
+    std::function<SampleGrant(double pixel_samples_per_second)> sample_source;
     double time_limit_s = 0; // 0: none; otherwise stop after the pass that crosses it
     uint32_t threads = 0;    // CPU threads; 0: all cores
     // `--features all`: render with the path loop that has every feature compiled in instead

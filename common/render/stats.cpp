@@ -37,6 +37,13 @@ nlohmann::json statistic_json(const PipelineStatistic& st) {
     return j;
 }
 
+nlohmann::json ranges_json(const std::vector<SampleRange>& ranges) {
+    nlohmann::json j = nlohmann::json::array();
+    for (const SampleRange& r : ranges)
+        j.push_back({{"seed", r.seed}, {"begin", r.begin}, {"end", r.end}});
+    return j;
+}
+
 void write_json(const std::string& path, const nlohmann::json& j) {
     write_output_file(path, j.dump(2) + "\n");
 }
@@ -92,6 +99,18 @@ void write_stats_json(const std::string& path, const RenderStats& s) {
         {"scene", s.scene_features}, {"variant", s.feature_variant}, {"mask", s.feature_mask}};
     if (s.pipeline) j["pipeline_creation"] = creation_json(*s.pipeline);
     for (const auto& [k, v] : s.extra) j["extra"][k] = v;
+    if (!s.sample_ranges.empty()) j["sample_ranges"] = ranges_json(s.sample_ranges);
+    for (const DeviceShare& d : s.devices)
+        j["devices"].push_back(
+            {{"device", d.device},
+             {"spp", d.spp},
+             {"sample_ranges", ranges_json(d.ranges)},
+             {"samples", d.samples},
+             {"wall_time_s", d.wall_time_s},
+             {"gpu_time_s", d.gpu_time_s >= 0 ? nlohmann::json(d.gpu_time_s) : nullptr},
+             {"rays", d.rays.total()},
+             {"rays_per_second",
+              d.wall_time_s > 0 ? double(d.rays.total()) / d.wall_time_s : 0.0}});
     write_json(path, j);
 }
 

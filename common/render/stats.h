@@ -62,6 +62,25 @@ struct PipelineReport {
     std::vector<PipelineExecutable> executables;
 };
 
+// Sample indices [begin, end) of one seed's sequence (shared/rng.h).
+struct SampleRange {
+    uint32_t seed = 0;
+    uint64_t begin = 0, end = 0;
+    bool operator==(const SampleRange& o) const {
+        return seed == o.seed && begin == o.begin && end == o.end;
+    }
+};
+
+// One device's share of a render on several (the Vulkan engine's --device all).
+struct DeviceShare {
+    std::string device; // its name, with its index: "0: NVIDIA H200"
+    uint32_t spp = 0;   // samples per pixel it traced
+    std::vector<SampleRange> ranges;
+    double wall_time_s = 0, gpu_time_s = -1;
+    RayCounts rays;
+    uint64_t samples = 0;
+};
+
 struct RenderStats {
     std::string scene;
     std::string backend; // "cpu" or "vulkan"
@@ -85,6 +104,10 @@ struct RenderStats {
     uint32_t feature_mask = 0;
     std::map<std::string, std::string> extra;
     std::optional<PipelineReport> pipeline; // Vulkan: the render pipeline
+    // The samples traced; empty where the renderer leaves it to render_exr, which then records
+    // [sample_offset, sample_offset + spp).
+    std::vector<SampleRange> sample_ranges;
+    std::vector<DeviceShare> devices; // several devices: each one's share
 
     double rays_per_second() const {
         return wall_time_s > 0 ? double(rays.total()) / wall_time_s : 0.0;

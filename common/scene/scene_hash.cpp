@@ -1,0 +1,34 @@
+#include "scene/scene_hash.h"
+
+#include <fmt/core.h>
+
+namespace tp {
+
+void add_scene_content(Fnv1a& h, const FlatScene& s) {
+    h.array(s.materials);
+    h.array(s.meshes);
+    h.array(s.positions);
+    h.array(s.normals);
+    h.array(s.uvs);
+    h.array(s.triangles);
+    h.array(s.instances);
+    h.array(s.lights);
+    h.array(s.light_table);
+    h.array(s.textures);
+    h.array(s.texels);
+    h.array(s.env_table);
+    const RenderParams& p = s.params;
+    h.value(p.light_count);
+    h.value(p.env_light);
+    h.value(p.env_texture);
+    h.value(p.env_alias_offset);
+    h.value(p.env_rotation);
+}
+
+std::string scene_hash(const FlatScene& scene) {
+    Fnv1a h;
+    add_scene_content(h, scene);
+    return fmt::format("{:016x}", h.get());
+}
+
+} // namespace tp

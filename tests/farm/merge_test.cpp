@@ -1,0 +1,198 @@
+// twinpath merge (compare/merge.h, docs/farm.md): the pooled variance against the variance of
+// all samples computed directly, merged CPU parts against one render, and every refusal.
+#include "compare/merge.h"
+#include "image/exr_io.h"
+#include "render/render_header.h"
+#include "split_check.h"
+#include "support/test_paths.h"
+
+#include <catch2/catch.hpp>
+
+#include <cmath>
+#include <filesystem>
+#include <random>
+
+using namespace tp;
+using tp::test::render_part;
+using tp::test::run;
+using tp::test::shell_quote;
+using tp::test::twinpath;
+
+namespace {
+
+// A 1x1 render of the given samples as a twinpath part: mean and variance of the mean from
+// the two-pass formulas.
+ExrImage part_of(const std::vector<double>& x, uint64_t begin) {
+    const double n = double(x.size());
+    double mean = 0, ss = 0;
+    for (double v : x) mean += v / n;
+    for (double v : x) ss += (v - mean) * (v - mean);
+    ExrImage img;
+    img.width = img.height = 1;
+    for (const char* c : {"R", "G", "B"}) {
+        img.channels[c] = {float(mean)};
+        img.channels[std::string("variance.") + c] = {float(ss / (n - 1) / n)};
+    }
+    img.integers[header::kSpp] = int64_t(x.size());
+    img.strings[header::kSampleRanges] = format_sample_ranges({{0, begin, begin + x.size()}});
+    img.strings[header::kSceneHash] = "0123456789abcdef";
+    img.strings[header::kCamera] = "camera";
+    img.strings[header::kSettings] = "settings";
+    img.strings[header::kBackend] = "cpu/embree";
+    img.strings[header::kVarianceEstimator] = kVarianceFromSamples;
+    return img;
+}
+
+std::string merge_error(const std::vector<std::string>& files) {
+    std::string args;
+    for (const std::string& f : files) args += shell_quote(f) + " ";
+    const auto r = run(twinpath("merge " + args + "-o " + shell_quote(files[0] + ".merged.exr")));
+    INFO(r.out);
+    CHECK(r.exit_code == 2);
+    return r.out;
+}
+
+} // namespace
+
+TEST_CASE("merge pools the variance of all samples, between-part spread included", "[farm]") {
+    // Three parts of 5, 9 and 14 samples with different means (the second is shifted by 3),
+    // so that averaging their variances of the mean would miss both the spread between them
+    // and the larger total count.
+    std::mt19937 rng(7);
+    std::normal_distribution<double> g(1.0, 0.5);
+    std::vector<std::vector<double>> samples = {{}, {}, {}};
+    const size_t sizes[3] = {5, 9, 14};
+    for (int k = 0; k < 3; ++k)
+        for (size_t i = 0; i < sizes[k]; ++i) samples[k].push_back(g(rng) + (k == 1 ? 3.0 : 0.0));
+    RenderMerger merger;
+    std::vector<double> all;
+    uint64_t begin = 0;
+    double averaged = 0;
+    for (int k = 0; k < 3; ++k) {
+        const ExrImage p = part_of(samples[k], begin);
+        averaged += double(p.channel("variance.R")[0]) / 3;
+        merger.add("part" + std::to_string(k), p);
+        begin += sizes[k];
+        all.insert(all.end(), samples[k].begin(), samples[k].end());
+    }
+    const ExrImage m = merger.result();
+    const ExrImage direct = part_of(all, 0);
+    // The parts' float32 means and variances carry 2^-24 relative rounding each; 1e-6
+    // relative bounds what that does to a mean and a variance of samples that spread by ~1.
+    CHECK(m.channel("R")[0] == Approx(direct.channel("R")[0]).epsilon(1e-6));
+    CHECK(m.channel("variance.G")[0] == Approx(direct.channel("variance.G")[0]).epsilon(1e-6));
+    CHECK(std::fabs(double(m.channel("variance.G")[0]) - averaged) > 0.5 * averaged);
+    CHECK(m.integers.at(header::kSpp) == 28);
+    CHECK(m.strings.at(header::kSampleRanges) == "0:0-28");
+    CHECK(m.integers.at(header::kSeed) == 0);
+}
+
+TEST_CASE("merge refuses another variance estimator and overlapping ranges", "[farm]") {
+    RenderMerger merger;
+    merger.add("a.exr", part_of({1.0, 2.0}, 0));
+    ExrImage other = part_of({1.0, 2.0}, 2);
+    other.strings[header::kVarianceEstimator] = "batches";
+    CHECK_THROWS_WITH(merger.add("b.exr", other),
+                      Catch::Contains("b.exr") && Catch::Contains("twinpath:variance_estimator"));
+    CHECK_THROWS_WITH(merger.add("c.exr", part_of({1.0, 2.0, 3.0}, 1)),
+                      Catch::Contains("c.exr") && Catch::Contains("overlap") &&
+                          Catch::Contains("a.exr"));
+}
+
+TEST_CASE("CPU parts tiling [0, 2N) merge into the 2N render", "[farm]") {
+    const std::string dir = tp::test::temp_dir("merge-cpu");
+    const std::string a = render_part(dir, "a.exr", "--spp 4");
+    const std::string b = render_part(dir, "b.exr", "--spp 4 --sample-offset 4");
+    const std::string single = render_part(dir, "single.exr", "--spp 8");
+    tp::test::check_merge_equals_single(dir, {b, a}, single);
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("--sample-offset shifts the samples of the CPU reference", "[farm]") {
+    tp::test::check_offset_shifts_samples(tp::test::temp_dir("offset-cpu"), "--backend cpu");
+}
+
+TEST_CASE("merge refuses parts that are not of one render, naming file and field", "[farm]") {
+    const std::string dir = tp::test::temp_dir("merge-refuse");
+    const std::string a = render_part(dir, "a.exr", "--spp 2");
+    const std::string b = render_part(dir, "b.exr", "--spp 2 --sample-offset 2");
+    auto refused = [&](const std::string& name, const std::string& args, const char* field) {
+        const std::string p = render_part(dir, name, args);
+        const std::string out = merge_error({a, p});
+        CHECK_THAT(out, Catch::Contains(p) && Catch::Contains(field));
+    };
+    refused("fov.exr", "--spp 2 --sample-offset 2 --fov 30", "twinpath:camera");
+    refused("depth.exr", "--spp 2 --sample-offset 2 --min-depth 2", "twinpath:settings");
+    refused("overlap.exr", "--spp 2 --sample-offset 1", "twinpath:sample_ranges");
+    CHECK_THAT(merge_error({a, a}), Catch::Contains("overlap"));
+    {
+        const std::string p = dir + "/size.exr";
+        REQUIRE(run(twinpath("render cornell --width 8 --height 16 --max-depth 4 --spp 2 "
+                             "--sample-offset 2 -o " +
+                             shell_quote(p)))
+                    .exit_code == 0);
+        CHECK_THAT(merge_error({a, p}), Catch::Contains(p) && Catch::Contains("8x16"));
+    }
+    {
+        const std::string p = dir + "/scene.exr";
+        REQUIRE(run(twinpath("render spheres --width 16 --height 16 --max-depth 4 --spp 2 "
+                             "--sample-offset 2 -o " +
+                             shell_quote(p)))
+                    .exit_code == 0);
+        CHECK_THAT(merge_error({a, p}), Catch::Contains(p));
+        CHECK_THAT(merge_error({a, p}),
+                   Catch::Contains("twinpath:camera") || Catch::Contains("twinpath:scene_hash"));
+    }
+    // Fields that renders of one scene and camera on this backend cannot differ in: a copy of
+    // a part with the field changed.
+    {
+        ExrImage img = read_exr(b);
+        img.strings["twinpath:backend"] = "vulkan/compute";
+        write_exr(dir + "/backend.exr", img);
+        CHECK_THAT(merge_error({a, dir + "/backend.exr"}),
+                   Catch::Contains("backend.exr") && Catch::Contains("twinpath:backend"));
+        img = read_exr(b);
+        img.strings["twinpath:scene_hash"] = "ffffffffffffffff";
+        write_exr(dir + "/hash.exr", img);
+        CHECK_THAT(merge_error({a, dir + "/hash.exr"}),
+                   Catch::Contains("hash.exr") && Catch::Contains("twinpath:scene_hash"));
+        img = read_exr(b);
+        img.strings.erase("twinpath:sample_ranges");
+        write_exr(dir + "/old.exr", img);
+        CHECK_THAT(merge_error({a, dir + "/old.exr"}),
+                   Catch::Contains("old.exr") && Catch::Contains("twinpath:sample_ranges"));
+    }
+    // Independent seeds: accepted and recorded, no single seed claimed.
+    const std::string s1 = render_part(dir, "seed1.exr", "--spp 2 --seed 1");
+    const std::string merged = dir + "/seeds.exr";
+    REQUIRE(run(twinpath("merge " + shell_quote(a) + " " + shell_quote(s1) + " -o " +
+                         shell_quote(merged)))
+                .exit_code == 0);
+    const ExrImage m = read_exr(merged);
+    CHECK(m.strings.at("twinpath:sample_ranges") == "0:0-2,1:0-2");
+    CHECK(m.integers.at("twinpath:spp") == 4);
+    CHECK(m.integers.count("twinpath:seed") == 0);
+    std::filesystem::remove_all(dir);
+    CHECK_THAT(m.strings.at("twinpath:parts"),
+               Catch::Contains("a.exr") && Catch::Contains("seed1.exr"));
+}
+
+TEST_CASE("merge merges the AOV layers", "[farm]") {
+    const std::string dir = tp::test::temp_dir("merge-aov");
+    const std::string a = render_part(dir, "a.exr", "--spp 1 --aov all");
+    const std::string b = render_part(dir, "b.exr", "--spp 1 --sample-offset 1 --aov all");
+    const std::string single = render_part(dir, "single.exr", "--spp 2 --aov all");
+    const std::string merged = dir + "/merged.exr";
+    REQUIRE(run(twinpath("merge " + shell_quote(a) + " " + shell_quote(b) + " -o " +
+                         shell_quote(merged)))
+                .exit_code == 0);
+    // Both trace the same pixel centres: --exact's AOV rules (ids exact, the rest 1e-4).
+    const auto r =
+        run(twinpath("compare --exact " + shell_quote(merged) + " " + shell_quote(single)));
+    INFO(r.out);
+    CHECK(r.exit_code == 0);
+    const ExrImage m = read_exr(merged);
+    for (const char* c : {"albedo.R", "normal.Y", "depth.Z", "id.instance", "id.material"})
+        CHECK(m.has(c));
+    std::filesystem::remove_all(dir);
+}
