@@ -76,9 +76,9 @@ std::string compute_mode_missing(const DeviceCaps& caps) {
 }
 
 const std::vector<const char*>& pipeline_extensions() {
-    static const std::vector<const char*> names = {
-        VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME, VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
-        VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
+    static const std::vector<const char*> names = {VK_KHR_ACCELERATION_STRUCTURE_EXTENSION_NAME,
+                                                   VK_KHR_RAY_TRACING_PIPELINE_EXTENSION_NAME,
+                                                   VK_KHR_DEFERRED_HOST_OPERATIONS_EXTENSION_NAME};
     return names;
 }
 
@@ -133,6 +133,47 @@ const DeviceInfo& select_device(const std::vector<DeviceInfo>& devices,
         if (lower(d.name).find(lower(selector)) != std::string::npos) return require_compute(d);
     input_error("--device {}: no Vulkan device name contains it (devices: {})", selector,
                 device_list(devices));
+}
+
+bool selects_several(const std::string& selector) {
+    return selector == "all" || selector.find(',') != std::string::npos;
+}
+
+std::vector<DeviceInfo> select_devices(const std::vector<DeviceInfo>& devices,
+                                       const std::string& selector) {
+    if (devices.empty()) runtime_error("no Vulkan device found (is a Vulkan driver installed?)");
+    std::vector<DeviceInfo> chosen;
+    if (selector == "all") {
+        const bool other_than_cpu = std::any_of(devices.begin(), devices.end(), [](const auto& d) {
+            return d.compute() && d.type != "cpu";
+        });
+        for (const DeviceInfo& d : devices)
+            if (d.compute() && (d.type != "cpu" || !other_than_cpu)) chosen.push_back(d);
+        if (chosen.empty()) return {require_compute(devices.front())};
+        return chosen;
+    }
+    size_t start = 0;
+    while (start <= selector.size()) {
+        const size_t end = std::min(selector.find(',', start), selector.size());
+        const DeviceInfo& d = select_device(devices, selector.substr(start, end - start));
+        for (const DeviceInfo& c : chosen)
+            if (c.index == d.index)
+                input_error("--device {}: device {} ({}) is named twice", selector, d.index,
+                            d.name);
+        chosen.push_back(d);
+        start = end + 1;
+    }
+    return chosen;
+}
+
+std::string resolve_common_mode(const std::string& requested,
+                                const std::vector<DeviceInfo>& devices) {
+    const bool all_pipeline = std::all_of(devices.begin(), devices.end(),
+                                          [](const DeviceInfo& d) { return d.pipeline(); });
+    const std::string mode =
+        requested == "auto" ? (all_pipeline ? "pipeline" : "compute") : requested;
+    for (const DeviceInfo& d : devices) resolve_vk_mode(mode, d); // throws for what cannot run
+    return mode;
 }
 
 } // namespace tp

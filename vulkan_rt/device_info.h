@@ -73,4 +73,17 @@ std::string resolve_vk_mode(const std::string& requested, const DeviceInfo& devi
 const DeviceInfo& select_device(const std::vector<DeviceInfo>& devices,
                                 const std::string& selector);
 
+// Whether a --device selector names several devices: "all" or a comma-separated list.
+bool selects_several(const std::string& selector);
+// The devices such a selector names. "all": every compute-capable device, without the CPU
+// devices (lavapipe) when there is another kind: a rasterizer on the host's cores would take
+// them from the threads that drive the GPUs. A list: each item as select_device reads it, no
+// device twice (InputError).
+std::vector<DeviceInfo> select_devices(const std::vector<DeviceInfo>& devices,
+                                       const std::string& selector);
+// The mode that every one of `devices` runs for a --vk-mode request, so that their samples are
+// of one estimator: auto is pipeline when every device supports it, else compute.
+std::string resolve_common_mode(const std::string& requested,
+                                const std::vector<DeviceInfo>& devices);
+
 } // namespace tp

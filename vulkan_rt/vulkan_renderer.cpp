@@ -4,6 +4,7 @@
 #include "util/error.h"
 #include "vulkan_rt/compute_renderer.h"
 #include "vulkan_rt/context.h"
+#include "vulkan_rt/device_group.h"
 #include "vulkan_rt/pipeline_renderer.h"
 #include "vulkan_rt/pipeline_report.h"
 
@@ -64,12 +65,16 @@ VulkanOptions backend_vulkan_options(const std::string& mode, const std::string&
 
 RenderResult render_vulkan(const FlatScene& scene, const RenderOptions& options,
                            const VulkanOptions& vk) {
-    const VulkanContext& ctx = open_context(vk);
-    RenderResult r = render_on(ctx, scene, options, vk.bvh);
+    const bool several = selects_several(vk.device);
+    if (several) open_device.reset(); // every device of the group opens its own
+    RenderResult r = several ? render_on_devices(scene, options, vk)
+                             : render_on(open_context(vk), scene, options, vk.bvh);
     r.stats.scene_features = analyze_features(scene).names();
     r.stats.feature_mask = render_feature_mask(scene, options.all_features);
     r.stats.feature_variant = options.all_features ? "all" : "scene";
     r.stats.extra["vk_mode_requested"] = vk.mode;
+    if (several) return r;
+    const VulkanContext& ctx = *open_device;
     r.stats.extra["driver"] = ctx.info().driver;
     r.stats.extra["validation"] = ctx.instance().validation_enabled() ? "on" : "off";
     r.stats.extra["validation_messages"] = std::to_string(ctx.instance().validation_messages());

@@ -12,7 +12,9 @@
 namespace tp {
 
 struct VulkanOptions {
-    std::string device;        // --device: index or name substring; empty: the best device
+    // --device: index or name substring; empty: the best device; "all" or a comma-separated
+    // list: several devices at once (device_group.h).
+    std::string device;
     std::string mode = "auto"; // --vk-mode: auto, compute or pipeline (resolve_vk_mode)
     // --bvh: compute mode's BVH layout (bvh_builder.h). The default is the one that traced
     // faster on every scene measured (BENCHMARKS.md, "h200-wide-bvh").

@@ -27,6 +27,18 @@ void Film::add_batch(uint32_t p, uint64_t nb, const glm::dvec3& sum, const glm::
     count_[p] = na + nb;
 }
 
+void Film::merge(const Film& o) {
+    for (size_t p = 0; p < count_.size(); ++p) {
+        const uint64_t na = count_[p], nb = o.count_[p];
+        if (nb == 0) continue;
+        const double n = double(na + nb);
+        const glm::dvec3 delta = o.mean_[p] - mean_[p];
+        mean_[p] += delta * (double(nb) / n);
+        m2_[p] += o.m2_[p] + delta * delta * (double(na) * double(nb) / n);
+        count_[p] = na + nb;
+    }
+}
+
 glm::dvec3 Film::variance_of_mean(uint32_t p) const {
     const uint64_t n = count_[p];
     if (n < 2) return glm::dvec3(0.0);

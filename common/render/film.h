@@ -26,6 +26,10 @@ class Film {
     // n samples of pixel p with the given sum and sum of squares per channel.
     void add_batch(uint32_t p, uint64_t n, const glm::dvec3& sum, const glm::dvec3& sum_sq);
 
+    // Every pixel of another film of the same size (its samples are added to this one's), by
+    // the same pairwise update.
+    void merge(const Film& other);
+
     uint64_t count(uint32_t p) const { return count_[p]; }
     glm::dvec3 mean(uint32_t p) const { return mean_[p]; }
     // Variance of the mean: the unbiased sample variance divided by n; 0 below 2 samples.

@@ -1,10 +1,11 @@
 // Split renders on the Vulkan engine (lavapipe in CI): --sample-offset shifts the sample index
-// the shaders hash, and parts merge into one render.
+// the shaders hash, parts merge into one render, and --device all renders on every device.
 #include "image/exr_io.h"
 #include "split_check.h"
 #include "support/test_paths.h"
 
 #include <catch2/catch.hpp>
+#include <nlohmann/json.hpp>
 
 #include <cmath>
 #include <filesystem>
@@ -23,5 +24,37 @@ TEST_CASE("Vulkan parts tiling [0, 2N) merge into the 2N render", "[farm][gpu]")
     const std::string b = render_part(dir, "b.exr", vk + "--spp 3 --sample-offset 3");
     const std::string single = render_part(dir, "single.exr", vk + "--spp 6");
     tp::test::check_merge_equals_single(dir, {a, b}, single);
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("--device all on one device renders the image of that device", "[farm][gpu]") {
+    // lavapipe is CI's only device: the share hands it several ranges one after another
+    // (sample_share.h), accumulated in one accumulator, so the image is the one-device render's
+    // up to the order of double-precision additions (~1e-16 relative) before the one float32
+    // rounding: each value within 2^-23 relative (one float step either way).
+    const std::string dir = tp::test::temp_dir("device-all");
+    const std::string vk = "--backend vulkan --vk-mode compute --spp 6 --sample-offset 2 ";
+    const std::string all =
+        render_part(dir, "all.exr", vk + "--device all --stats " + dir + "/all.json");
+    const std::string one = render_part(dir, "one.exr", vk);
+    const tp::ExrImage a = tp::read_exr(all), b = tp::read_exr(one);
+    CHECK(a.strings.at("twinpath:sample_ranges") == "0:2-8");
+    for (const auto& [name, data] : b.channels)
+        for (size_t i = 0; i < data.size(); ++i)
+            CHECK(std::fabs(double(a.channel(name)[i]) - double(data[i])) <=
+                  1.2e-7 * std::fabs(double(data[i])));
+    const nlohmann::json stats = tp::test::read_json(dir + "/all.json");
+    REQUIRE(stats.at("devices").size() == 1);
+    const nlohmann::json& d = stats.at("devices")[0];
+    CHECK(d.at("spp") == 6);
+    CHECK(d.at("samples") == 6 * 16 * 16);
+    uint64_t covered = 0;
+    for (const nlohmann::json& r : d.at("sample_ranges")) {
+        CHECK(r.at("begin") >= 2);
+        CHECK(r.at("end") <= 8);
+        covered += r.at("end").get<uint64_t>() - r.at("begin").get<uint64_t>();
+    }
+    CHECK(covered == 6);
+    CHECK(stats.at("spp") == 6);
     std::filesystem::remove_all(dir);
 }
