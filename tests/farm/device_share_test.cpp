@@ -90,7 +90,7 @@ TEST_CASE("devices of different speeds finish within a sample of each other", "[
     CHECK(last <= ideal + 4.0 + 1e-9);
 }
 
-TEST_CASE("--device all names every GPU, or the CPU device when it is alone", "[farm]") {
+TEST_CASE("device all names every GPU, or the CPU device when it is alone", "[farm]") {
     const std::vector<DeviceInfo> mixed = {device(0, "llvmpipe", "cpu"),
                                            device(1, "NVIDIA H200", "discrete"),
                                            device(2, "NVIDIA H200", "discrete")};

@@ -99,7 +99,7 @@ TEST_CASE("merge refuses another variance estimator and overlapping ranges", "[f
                           Catch::Contains("a.exr"));
 }
 
-TEST_CASE("CPU parts tiling [0, 2N) merge into the 2N render", "[farm]") {
+TEST_CASE("CPU parts tiling samples 0 to 2N merge into the 2N render", "[farm]") {
     const std::string dir = tp::test::temp_dir("merge-cpu");
     const std::string a = render_part(dir, "a.exr", "--spp 4");
     const std::string b = render_part(dir, "b.exr", "--spp 4 --sample-offset 4");
@@ -108,7 +108,7 @@ TEST_CASE("CPU parts tiling [0, 2N) merge into the 2N render", "[farm]") {
     std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("--sample-offset shifts the samples of the CPU reference", "[farm]") {
+TEST_CASE("render --sample-offset shifts the samples of the CPU reference", "[farm]") {
     tp::test::check_offset_shifts_samples(tp::test::temp_dir("offset-cpu"), "--backend cpu");
 }
 

@@ -12,12 +12,12 @@
 
 using tp::test::render_part;
 
-TEST_CASE("--sample-offset shifts the samples of the Vulkan compute engine", "[farm][gpu]") {
+TEST_CASE("render --sample-offset shifts the samples of the Vulkan compute engine", "[farm][gpu]") {
     tp::test::check_offset_shifts_samples(tp::test::temp_dir("offset-vk"),
                                           "--backend vulkan --vk-mode compute");
 }
 
-TEST_CASE("Vulkan parts tiling [0, 2N) merge into the 2N render", "[farm][gpu]") {
+TEST_CASE("Vulkan parts tiling samples 0 to 2N merge into the 2N render", "[farm][gpu]") {
     const std::string dir = tp::test::temp_dir("merge-vk");
     const std::string vk = "--backend vulkan --vk-mode compute ";
     const std::string a = render_part(dir, "a.exr", vk + "--spp 3");
@@ -27,7 +27,7 @@ TEST_CASE("Vulkan parts tiling [0, 2N) merge into the 2N render", "[farm][gpu]")
     std::filesystem::remove_all(dir);
 }
 
-TEST_CASE("--device all on one device renders the image of that device", "[farm][gpu]") {
+TEST_CASE("render --device all on one device renders the image of that device", "[farm][gpu]") {
     // lavapipe is CI's only device: the share hands it several ranges one after another
     // (sample_share.h), accumulated in one accumulator, so the image is the one-device render's
     // up to the order of double-precision additions (~1e-16 relative) before the one float32
