@@ -20,8 +20,9 @@ build_pkgs=(
   python3
 )
 # Only the test suite needs these (make test): Catch2, headless Chromium for the HTML report
-# test, spirv-val/spirv-opt for the SPIR-V checks.
-test_pkgs=(catch2 chromium spirv-tools)
+# test, spirv-val/spirv-opt for the SPIR-V checks, and a one-node Slurm cluster with its
+# munge authentication for the farm test (tests/farm/slurm_test.cpp).
+test_pkgs=(catch2 chromium spirv-tools slurm-wlm munge)
 
 case "${1:-build}" in
   build) pkgs=("${build_pkgs[@]}") ;;
