@@ -1,6 +1,6 @@
 // render/film.h: Welford's running mean and M2 against a two-pass computation in long double,
-// the Chan-Golub-LeVeque merge of batches against sample-by-sample accumulation, and the
-// variance of the mean the EXR carries.
+// the Chan-Golub-LeVeque merge of batches and of whole films against sample-by-sample
+// accumulation, and the variance of the mean the EXR carries.
 #include "render/film.h"
 
 #include <catch2/catch.hpp>
@@ -101,6 +101,30 @@ TEST_CASE("film: add_batch equals repeated add_sample", "[film]") {
         CHECK(f.variance_of_mean(1).x == Approx(3.0));
         CHECK(f.count(0) == 0);
     }
+}
+
+TEST_CASE("film: merge of two films equals one film of all their samples", "[film]") {
+    // --device all merges the devices' films (vulkan_rt/device_group.cpp). Two films of 700
+    // and 1300 samples with different means (0.5 and 2: the between-film term matters) against
+    // the two-pass mean and M2 of all 2000 in long double. Welford's and the merge's rounding
+    // grow like n eps: tolerance 8 n eps. A pixel empty in the merged-in film is unchanged.
+    std::vector<double> a = samples(700, 0.5, 0.2, 11), b = samples(1300, 2.0, 0.3, 12);
+    tp::Film fa(2, 1), fb(2, 1);
+    for (double v : a) fa.add_sample(0, glm::dvec3(v));
+    for (double v : b) fb.add_sample(0, glm::dvec3(v));
+    fa.add_sample(1, glm::dvec3(4.0));
+    fa.add_sample(1, glm::dvec3(6.0));
+    fa.merge(fb);
+    std::vector<double> all = a;
+    all.insert(all.end(), b.begin(), b.end());
+    const TwoPass t = two_pass(all);
+    const double n = double(all.size()), tol = 8.0 * n * kEps;
+    CHECK(fa.count(0) == all.size());
+    CHECK(fa.mean(0).y == Approx(double(t.mean)).epsilon(tol));
+    CHECK(fa.variance_of_mean(0).y == Approx(double(t.m2 / ((n - 1) * n))).epsilon(tol));
+    CHECK(fa.count(1) == 2);
+    CHECK(fa.mean(1).z == 5.0);
+    CHECK(fa.variance_of_mean(1).z == 1.0); // {4, 6}: variance 2, of the mean 1
 }
 
 TEST_CASE("film: variance of the mean and the EXR channels", "[film]") {
