@@ -15,8 +15,8 @@ namespace fs = std::filesystem;
 namespace tp::bench {
 namespace {
 
-vec3 transform_point(const glm::mat4& m, const vec3& p) {
-    return vec3(m * glm::vec4(p, 1.0f));
+glm::dvec3 transform_point(const glm::dmat4& m, const glm::dvec3& p) {
+    return glm::dvec3(m * glm::dvec4(p, 1.0));
 }
 
 // Area and area-weighted centroid and normal of an object's triangles in world space.
@@ -29,9 +29,9 @@ Emitter measure_emitter(const Scene& scene, const Object& o) {
     Emitter e;
     const Mesh& m = scene.meshes[o.mesh];
     for (const uvec3& t : m.triangles) {
-        const glm::dvec3 a(transform_point(o.transform, m.positions[t.x]));
-        const glm::dvec3 b(transform_point(o.transform, m.positions[t.y]));
-        const glm::dvec3 c(transform_point(o.transform, m.positions[t.z]));
+        const glm::dvec3 a = transform_point(o.transform, m.positions[t.x]);
+        const glm::dvec3 b = transform_point(o.transform, m.positions[t.y]);
+        const glm::dvec3 c = transform_point(o.transform, m.positions[t.z]);
         const glm::dvec3 n = glm::cross(b - a, c - a); // |n| = 2 area, front side (CCW)
         const double area = 0.5 * glm::length(n);
         e.area += area;
@@ -68,15 +68,15 @@ std::vector<std::string> make_peer_variant(Scene& scene, std::string& reason) {
             continue;
         }
         const Emitter e = measure_emitter(scene, o);
-        Light l{};
+        LightDesc l;
         l.type = LIGHT_POINT;
-        l.p0 = vec3(e.centroid + 0.25 * std::sqrt(e.area) * e.normal);
+        l.position = e.centroid + 0.25 * std::sqrt(e.area) * e.normal;
         l.value = ke * float(e.area / 4.0);
         scene.lights.push_back(l);
         changes.push_back(fmt::format(
             "emitter '{}' (area {:.4g} m^2, Ke {}) replaced by a point light of the same power at "
             "({}) with intensity ({}) W/sr",
-            o.name, e.area, triple(ke), triple(l.p0), triple(l.value)));
+            o.name, e.area, triple(ke), triple(vec3(l.position)), triple(l.value)));
     }
     scene.objects = kept;
     if (scene.environment.kind != EnvironmentKind::None) {

@@ -21,10 +21,10 @@ std::vector<std::string> split(const std::string& s) {
 }
 } // namespace
 
-vec3 parse_vec3(const std::string& option, const std::string& text) {
+glm::dvec3 parse_xyz(const std::string& option, const std::string& text) {
     const auto parts = split(text);
     if (parts.size() != 3) input_error("{}: expected X,Y,Z, got '{}'", option, text);
-    vec3 v;
+    glm::dvec3 v;
     for (int i = 0; i < 3; ++i) {
         const std::string& p = parts[size_t(i)];
         const char* end = p.data() + p.size();

@@ -5,13 +5,15 @@
 #include "util/error.h"
 
 #include <CLI/CLI.hpp>
+#include <glm/vec3.hpp>
 
 #include <string>
 
 namespace tp {
 
-// "1,2.5,-3" -> vec3; throws InputError naming the option.
-vec3 parse_vec3(const std::string& option, const std::string& text);
+// "1,2.5,-3" -> three finite numbers, in double (--eye and --target are positions, which the
+// scene keeps in double: scene/scene.h); throws InputError naming the option.
+glm::dvec3 parse_xyz(const std::string& option, const std::string& text);
 // "12,34" -> two non-negative integers.
 uvec2 parse_pixel(const std::string& option, const std::string& text);
 

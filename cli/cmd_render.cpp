@@ -91,9 +91,9 @@ int run_render(const RenderArgs& a) {
     o.height = a.height;
     o.min_depth = a.min_depth;
     o.max_depth = a.max_depth;
-    if (!a.eye.empty()) o.eye = parse_vec3("--eye", a.eye);
-    if (!a.target.empty()) o.target = parse_vec3("--target", a.target);
-    if (!a.up.empty()) o.up = parse_vec3("--up", a.up);
+    if (!a.eye.empty()) o.eye = parse_xyz("--eye", a.eye);
+    if (!a.target.empty()) o.target = parse_xyz("--target", a.target);
+    if (!a.up.empty()) o.up = vec3(parse_xyz("--up", a.up));
     o.fov = a.fov;
     apply_overrides(scene, o);
     const FlatScene flat = flatten(scene);

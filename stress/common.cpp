@@ -93,7 +93,7 @@ uint32_t add_mesh(Scene& s, Mesh m) {
 }
 
 void add_object(Scene& s, const std::string& name, uint32_t mesh, uint32_t material,
-                const glm::mat4& transform) {
+                const glm::dmat4& transform) {
     Object o;
     o.name = name;
     o.mesh = mesh;
@@ -124,9 +124,9 @@ Scene reference_scene(uint32_t image, uint32_t spp) {
                glm::scale(glm::rotate(glm::translate(I, vec3(0.0f, 2.0f, 0.0f)), glm::pi<float>(),
                                       vec3(1, 0, 0)),
                           vec3(0.4f)));
-    Light p{};
+    LightDesc p;
     p.type = LIGHT_POINT;
-    p.p0 = vec3(1.0f, 1.5f, 1.0f);
+    p.position = glm::dvec3(1.0, 1.5, 1.0);
     p.value = vec3(2.0f);
     s.lights.push_back(p);
     s.environment.kind = EnvironmentKind::Constant;
@@ -155,6 +155,19 @@ Rendered render(const Engine& e, const FlatScene& f, uint32_t seed) {
         if (m.x == 0.0 && m.y == 0.0 && m.z == 0.0) ++out.black_pixels;
     }
     return out;
+}
+
+bool render_reference(const Engine& e, const Scene& base, uint32_t seed, const char* group,
+                      const char* name, Rendered& ref, std::vector<CaseResult>& failed) {
+    try {
+        ref = render(e, flatten(base), seed);
+        return true;
+    } catch (const std::exception& ex) {
+        CaseResult c = make_case(group, name, e, "renders");
+        c.measured = std::string("threw: ") + ex.what();
+        failed = {c};
+        return false;
+    }
 }
 
 bool compare_consistent(const Rendered& a, const Rendered& b, double alpha, double& p) {

@@ -27,7 +27,7 @@ Material glass(float ior, vec3 tf = vec3(1.0f));
 Material emitter(vec3 ke);
 uint32_t add_mesh(Scene& s, Mesh m);
 void add_object(Scene& s, const std::string& name, uint32_t mesh, uint32_t material,
-                const glm::mat4& transform);
+                const glm::dmat4& transform);
 
 struct Rendered {
     RenderResult r;
@@ -35,6 +35,11 @@ struct Rendered {
     uint64_t black_pixels = 0;     // pixels with a mean of exactly 0 in every channel
 };
 Rendered render(const Engine& e, const FlatScene& f, uint32_t seed);
+
+// A group's reference render (seed `seed`); when it throws, `failed` gets the one case that
+// says so and the group reports only that.
+bool render_reference(const Engine& e, const Scene& base, uint32_t seed, const char* group,
+                      const char* name, Rendered& ref, std::vector<CaseResult>& failed);
 
 // compare's two-sample verdict (docs/compare.md) on two renders; `p` receives its p-value.
 // Two independent renders (different seeds) of the same expectation are called different with

@@ -87,6 +87,7 @@ int run_stress(const StressOptions& o) {
     auto render_cases = [&](const Engine& e) {
         engines.push_back(e.backend + "/" + e.mode);
         add(scale_cases(e, s));
+        add(position_cases(e, s));
         add(range_cases(e, s));
         add(dielectric_cases(e, s));
         add(degenerate_cases(e, s));

@@ -20,7 +20,7 @@ class VulkanContext;
 namespace tp::stress {
 
 struct CaseResult {
-    std::string group;    // scale, watertight, brdf, dielectric, degenerate, accumulation, ...
+    std::string group;    // scale, position, watertight, brdf, dielectric, degenerate, ...
     std::string name;     // the case within its group
     std::string backend;  // cpu, vulkan, c++, glsl
     std::string mode;     // embree, compute, pipeline, or "-" for function tests
@@ -66,6 +66,9 @@ Size large_size();
 
 // ---- the cases (cases_*.cpp) ----------------------------------------------------------------
 std::vector<CaseResult> scale_cases(const Engine& e, const Size& s);
+// The reference scene moved with its camera by 1e2, 1e4 and 1e6: the same image for the same
+// seed (position_cases.cpp).
+std::vector<CaseResult> position_cases(const Engine& e, const Size& s);
 // Far objects inside and beyond the float32 range rule (range_cases.cpp).
 std::vector<CaseResult> range_cases(const Engine& e, const Size& s);
 std::vector<CaseResult> dielectric_cases(const Engine& e, const Size& s);

@@ -18,6 +18,7 @@
 
 #include <filesystem>
 #include <functional>
+#include <limits>
 #include <map>
 #include <random>
 
@@ -40,22 +41,24 @@ struct RaySet {
     uint64_t no_cone = 0; // rays not made: the target has no cone of entering directions
 };
 
-// Shared edges and vertices (a vertex counts when none of its edges is a boundary edge).
-std::vector<Target> targets(const Mesh& m, size_t& edges, size_t& vertices, size_t& boundary) {
+// Shared edges and vertices (a vertex counts when none of its edges is a boundary edge) of the
+// triangles over `positions`.
+std::vector<Target> targets(const std::vector<vec3>& positions, const std::vector<uvec3>& triangles,
+                            size_t& edges, size_t& vertices, size_t& boundary) {
     std::map<std::pair<uint32_t, uint32_t>, std::vector<uint32_t>> edge_faces;
-    std::vector<vec3> face_n(m.triangles.size());
-    std::vector<std::vector<uint32_t>> vertex_faces(m.positions.size());
-    for (uint32_t f = 0; f < m.triangles.size(); ++f) {
-        const uvec3 t = m.triangles[f];
+    std::vector<vec3> face_n(triangles.size());
+    std::vector<std::vector<uint32_t>> vertex_faces(positions.size());
+    for (uint32_t f = 0; f < triangles.size(); ++f) {
+        const uvec3 t = triangles[f];
         face_n[f] = glm::normalize(
-            glm::cross(m.positions[t.y] - m.positions[t.x], m.positions[t.z] - m.positions[t.x]));
+            glm::cross(positions[t.y] - positions[t.x], positions[t.z] - positions[t.x]));
         for (int k = 0; k < 3; ++k) {
             const uint32_t a = t[k], b = t[(k + 1) % 3];
             edge_faces[{std::min(a, b), std::max(a, b)}].push_back(f);
             vertex_faces[a].push_back(f);
         }
     }
-    std::vector<bool> open(m.positions.size(), false);
+    std::vector<bool> open(positions.size(), false);
     std::vector<Target> out;
     edges = vertices = boundary = 0;
     for (const auto& [e, faces] : edge_faces) {
@@ -67,16 +70,15 @@ std::vector<Target> targets(const Mesh& m, size_t& edges, size_t& vertices, size
         // A sliver pair (almost folded edge) has no cone of common front directions.
         if (glm::dot(face_n[faces[0]], face_n[faces[1]]) < -0.5f) continue;
         ++edges;
-        out.push_back({vec3(0.5f) * (m.positions[e.first] + m.positions[e.second]),
+        out.push_back({vec3(0.5f) * (positions[e.first] + positions[e.second]),
                        {face_n[faces[0]], face_n[faces[1]]}});
         // A second point along the edge, a quarter of the way.
-        out.push_back(
-            {m.positions[e.first] + 0.25f * (m.positions[e.second] - m.positions[e.first]),
-             {face_n[faces[0]], face_n[faces[1]]}});
+        out.push_back({positions[e.first] + 0.25f * (positions[e.second] - positions[e.first]),
+                       {face_n[faces[0]], face_n[faces[1]]}});
     }
-    for (uint32_t v = 0; v < m.positions.size(); ++v) {
+    for (uint32_t v = 0; v < positions.size(); ++v) {
         if (open[v] || vertex_faces[v].empty()) continue;
-        Target t{m.positions[v], {}};
+        Target t{positions[v], {}};
         for (uint32_t f : vertex_faces[v]) t.normals.push_back(face_n[f]);
         ++vertices;
         out.push_back(t);
@@ -87,15 +89,8 @@ std::vector<Target> targets(const Mesh& m, size_t& edges, size_t& vertices, size
 RaySet make_rays(const std::string& name, Mesh mesh, uint64_t min_rays) {
     RaySet rs;
     rs.mesh = name;
-    size_t boundary = 0;
-    const std::vector<Target> tg = targets(mesh, rs.edges, rs.vertices, boundary);
-    rs.boundary_edges = boundary;
-    vec3 lo(FLOAT_MAX), hi(-FLOAT_MAX);
-    for (const vec3& p : mesh.positions) {
-        lo = glm::min(lo, p);
-        hi = glm::max(hi, p);
-    }
-    const float size = glm::length(hi - lo);
+    glm::dvec3 lo(std::numeric_limits<double>::max());
+    for (const glm::dvec3& p : mesh.positions) lo = glm::min(lo, p);
 
     Scene s;
     s.path = "stress: " + name;
@@ -108,13 +103,27 @@ RaySet make_rays(const std::string& name, Mesh mesh, uint64_t min_rays) {
     o.name = name;
     s.objects = {o};
     s.settings.width = s.settings.height = 8;
-    // The rays below are aimed in the mesh's own coordinates; flatten() makes the world
-    // camera-relative (FlatScene::origin), so with the eye at the origin the world is the mesh's
-    // space exactly (an identity instance), and a vertex target stays a vertex.
+    // The rays below are aimed at the float vertices the engines trace. flatten() stores the
+    // mesh relative to its lowest corner and the world relative to the eye (FlatScene::origin):
+    // with the eye at that corner the instance is the identity exactly (translation lo - lo),
+    // so the world is the stored mesh and a vertex target stays a vertex on every engine.
     s.camera.given = true;
-    s.camera.eye = vec3(0.0f);
-    s.camera.target = vec3(0.0f, 0.0f, -1.0f);
+    s.camera.eye = lo;
+    s.camera.target = lo - glm::dvec3(0.0, 0.0, 1.0);
     rs.scene = flatten(s);
+    const MeshInfo& info = rs.scene.meshes.at(0);
+    const std::vector<vec3> positions(rs.scene.positions.begin() + info.first_vertex,
+                                      rs.scene.positions.begin() + info.first_vertex +
+                                          info.vertex_count);
+    const std::vector<uvec3> triangles(rs.scene.triangles.begin() + info.first_triangle,
+                                       rs.scene.triangles.begin() + info.first_triangle +
+                                           info.triangle_count);
+    size_t boundary = 0;
+    const std::vector<Target> tg = targets(positions, triangles, rs.edges, rs.vertices, boundary);
+    rs.boundary_edges = boundary;
+    vec3 hi(-FLOAT_MAX);
+    for (const vec3& p : positions) hi = glm::max(hi, p);
+    const float size = glm::length(hi); // the stored lowest corner is 0
 
     std::mt19937 rng(23);
     std::uniform_real_distribution<float> u(0.0f, 1.0f);

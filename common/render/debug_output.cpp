@@ -26,11 +26,6 @@ json number(float v) {
 json vec(vec3 v) {
     return json::array({number(v.x), number(v.y), number(v.z)});
 }
-// A camera-relative position in the scene's coordinates (PathLogInfo::origin), in double.
-json point(vec3 v, const glm::dvec3& origin) {
-    const glm::dvec3 p = glm::dvec3(v) + origin;
-    return json::array({number(p.x), number(p.y), number(p.z)});
-}
 json index(uint32_t i) {
     return i == NO_INDEX ? json(-1) : json(i);
 }
@@ -79,18 +74,18 @@ const char* const kRngNames[PATH_LOG_RNG] = {
     "rng.light_slot", "rng.light_coin", "rng.light_u", "rng.light_v", "rng.env_slot",
     "rng.env_coin",   "rng.lobe",       "rng.dir_u",   "rng.dir_v",   "rng.roulette"};
 
-json vertex_json(const PathVertex& v, const glm::dvec3& origin) {
+json vertex_json(const PathVertex& v) {
     json j;
     j["sample"] = v.sample_index;
     j["bounce"] = v.bounce;
     j["event"] = event_name(v.event);
-    j["ray_origin"] = point(v.ray_origin, origin);
+    j["ray_origin"] = vec(v.ray_origin);
     j["ray_dir"] = vec(v.ray_dir);
     j["t"] = number(v.t);
     j["instance"] = index(v.instance);
     j["primitive"] = index(v.primitive);
     j["bary"] = json::array({number(v.bary.x), number(v.bary.y)});
-    j["position"] = v.event == VERTEX_HIT ? point(v.position, origin) : vec(v.position);
+    j["position"] = vec(v.position);
     j["ng"] = vec(v.ng);
     j["ns"] = vec(v.ns);
     j["material"] = index(v.material);
@@ -207,7 +202,7 @@ void write_path_log(const std::string& path, const PathLogInfo& info,
                     const std::vector<PathVertex>& records) {
     json j;
     j["format"] = "twinpath path log";
-    j["version"] = 1;
+    j["version"] = 2; // 2: positions relative to "origin"
     j["backend"] = info.backend;
     j["mode"] = info.mode;
     j["device"] = info.device;
@@ -219,6 +214,7 @@ void write_path_log(const std::string& path, const PathLogInfo& info,
     j["max_depth"] = info.max_depth;
     j["min_depth"] = info.min_depth;
     j["pixel"] = {info.pixel_x, info.pixel_y};
+    j["origin"] = {info.origin.x, info.origin.y, info.origin.z};
     j["dropped_records"] = info.dropped;
     json paths = json::array();
     for (size_t i = 0; i < records.size();) {
@@ -226,7 +222,7 @@ void write_path_log(const std::string& path, const PathLogInfo& info,
         json vertices = json::array();
         vec3 L(0.0f);
         for (; i < records.size() && records[i].sample_index == s; ++i) {
-            vertices.push_back(vertex_json(records[i], info.origin));
+            vertices.push_back(vertex_json(records[i]));
             L = records[i].radiance;
         }
         paths.push_back({{"sample", s}, {"radiance", vec(L)}, {"vertices", std::move(vertices)}});

@@ -53,8 +53,8 @@ struct PathLogInfo {
     uint32_t seed = 0, width = 0, height = 0, spp = 0, max_depth = 0, min_depth = 0;
     uint32_t pixel_x = 0, pixel_y = 0;
     uint64_t dropped = 0;
-    // FlatScene::origin: the engines record camera-relative positions; the log shows them in the
-    // scene's coordinates.
+    // FlatScene::origin, the camera's eye: the engines, and the log, record positions relative to
+    // it (docs/debugging.md).
     glm::dvec3 origin{0.0};
 };
 

@@ -19,7 +19,7 @@ struct TriangleRef {
 // A triangle's world-space corners as bits, rotated to start at the lexicographically smallest
 // corner: the two windings of one vertex set get two keys. The reversed winding (a, c, b) of a
 // key (a, b, c) starts at the same smallest corner, so its key is the same with b and c swapped.
-using Key = std::array<uint32_t, 9>;
+using Key = std::array<uint64_t, 9>;
 
 Key reversed(Key k) {
     std::swap_ranges(k.begin() + 3, k.begin() + 6, k.begin() + 6);
@@ -35,26 +35,27 @@ struct Keyed {
     }
 };
 
-bool before(vec3 a, vec3 b) {
+bool before(const glm::dvec3& a, const glm::dvec3& b) {
     return std::tie(a.x, a.y, a.z) < std::tie(b.x, b.y, b.z);
 }
 
-Key key_of(vec3 a, vec3 b, vec3 c) {
-    const std::array<vec3, 3> v{a, b, c};
+Key key_of(const glm::dvec3& a, const glm::dvec3& b, const glm::dvec3& c) {
+    const std::array<glm::dvec3, 3> v{a, b, c};
     const int first =
         before(v[1], v[0]) ? (before(v[2], v[1]) ? 2 : 1) : (before(v[2], v[0]) ? 2 : 0);
     Key k;
     for (int i = 0; i < 3; ++i) {
-        const vec3 p = v[(first + i) % 3] + vec3(0.0f); // -0 + 0 = +0: one key per point
-        std::memcpy(&k[3 * i], &p, sizeof(vec3));
+        const glm::dvec3 p = v[(first + i) % 3] + glm::dvec3(0.0); // -0 + 0 = +0: one key per point
+        std::memcpy(&k[3 * i], &p, sizeof(glm::dvec3));
     }
     return k;
 }
 
-// M p + T in double, rounded once: equal for both objects exactly where the two meshes were
-// built to share the vertex (translated, scaled or rotated copies with exact products).
-vec3 world_point(const glm::dmat4& m, vec3 p) {
-    return vec3(m * glm::dvec4(glm::dvec3(p), 1.0));
+// M p + T in double, as the scene keeps positions (scene/scene.h): equal for both objects
+// exactly where the two meshes were built to share the vertex (translated, scaled or rotated
+// copies with exact products).
+glm::dvec3 world_point(const glm::dmat4& m, const glm::dvec3& p) {
+    return glm::dvec3(m * glm::dvec4(p, 1.0));
 }
 
 bool merges(const Material& m) {
@@ -91,12 +92,12 @@ std::optional<DielectricInterfaces> merge_dielectric_interfaces(const Scene& sce
         if (merges(scene.materials[scene.objects[o].material])) candidates.push_back(o);
     if (candidates.size() < 2) return std::nullopt;
 
-    // Sorted by key (44 bytes a triangle): each triangle's reversed partners are one range.
+    // Sorted by key (80 bytes a triangle): each triangle's reversed partners are one range.
     std::vector<Keyed> by_key;
     for (uint32_t o : candidates) {
         const Object& obj = scene.objects[o];
         const Mesh& m = scene.meshes[obj.mesh];
-        const glm::dmat4 to_world(obj.transform);
+        const glm::dmat4& to_world = obj.transform;
         for (uint32_t t = 0; t < m.triangles.size(); ++t) {
             const uvec3 tri = m.triangles[t];
             by_key.push_back({key_of(world_point(to_world, m.positions[tri.x]),

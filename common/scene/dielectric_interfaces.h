@@ -22,9 +22,9 @@ struct DielectricInterfaces {
 };
 
 // Pairs triangles of different objects with dielectric, non-emissive materials that have the
-// same world-space vertices (each M p + T computed in double, rounded to float) in opposite
-// order. Faces that overlap without the same triangulation are left as they are. Returns
-// nothing when there is no such pair, so that the common scene is not copied.
+// same world-space vertices (each M p + T computed in double) in opposite order. Faces that overlap
+// without the same triangulation are left as they are. Returns nothing when there is no such pair,
+// so that the common scene is not copied.
 std::optional<DielectricInterfaces> merge_dielectric_interfaces(const Scene& scene);
 
 } // namespace tp

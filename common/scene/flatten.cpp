@@ -44,13 +44,15 @@ void store_rows(const glm::mat4& m, vec4& r0, vec4& r1, vec4& r2) {
 void check_camera(const std::string& path, const CameraDesc& c, const RenderSettings& s) {
     if (s.width == 0 || s.height == 0)
         input_error("{}: film.width and film.height (--width, --height) must be positive", path);
-    if (!is_finite3(c.eye) || !is_finite3(c.target) || !is_finite3(c.up))
+    const auto finite = [](const glm::dvec3& v) {
+        return std::isfinite(v.x) && std::isfinite(v.y) && std::isfinite(v.z);
+    };
+    if (!finite(c.eye) || !finite(c.target) || !is_finite3(c.up))
         input_error("{}: camera.eye, camera.target and camera.up must be finite", path);
     if (!(c.fov_y_degrees > 0.0f && c.fov_y_degrees < 180.0f))
         input_error("{}: camera.fov (--fov) must lie in (0, 180) degrees, got {}", path,
                     c.fov_y_degrees);
-    // In double: the difference of two finite floats can overflow float.
-    const glm::dvec3 d = glm::dvec3(c.target) - glm::dvec3(c.eye);
+    const glm::dvec3 d = c.target - c.eye;
     if (glm::length(d) == 0.0)
         input_error("{}: camera.eye and camera.target (--eye, --target) coincide", path);
     if (glm::length(d) > kMaxWorldRange)
@@ -61,51 +63,48 @@ void check_camera(const std::string& path, const CameraDesc& c, const RenderSett
         input_error("{}: camera.up (--up) is zero or parallel to the viewing direction", path);
 }
 
-// One object's vertices: their bounds in the world (the scene's coordinates, in double) and
-// their largest coordinate in object space.
-struct ObjectExtent {
+// A bounding box in double.
+struct Box {
     glm::dvec3 lo{std::numeric_limits<double>::max()}, hi{-std::numeric_limits<double>::max()};
-    double object_max = 0.0;
+    void add(const glm::dvec3& p) {
+        lo = glm::min(lo, p);
+        hi = glm::max(hi, p);
+    }
+    void add(const Box& b) {
+        lo = glm::min(lo, b.lo);
+        hi = glm::max(hi, b.hi);
+    }
+    bool empty() const { return lo.x > hi.x; }
+    // The largest coordinate of a point of the box relative to `from`: a corner's.
+    double farthest(const glm::dvec3& from) const {
+        const glm::dvec3 m = glm::max(glm::abs(lo - from), glm::abs(hi - from));
+        return std::max(m.x, std::max(m.y, m.z));
+    }
 };
 
-// The float32 range rule (docs/scene-format.md, "Range"): every object's vertices, in object
-// space and in the world relative to `origin`, within kMaxWorldRange per coordinate; the first
-// object beyond it is named. Per coordinate the farthest vertex from `origin` is a corner of the
-// object's world bounds.
-void check_range(const Scene& scene, const std::vector<ObjectExtent>& extents,
-                 const glm::dvec3& origin) {
-    for (size_t i = 0; i < scene.objects.size(); ++i) {
-        const ObjectExtent& e = extents[i];
-        if (e.lo.x > e.hi.x) continue; // a mesh without vertices
-        const glm::dvec3 m = glm::max(glm::abs(e.lo - origin), glm::abs(e.hi - origin));
-        const double far = std::max(e.object_max, std::max(m.x, std::max(m.y, m.z)));
-        if (!(far <= kMaxWorldRange))
-            input_error("{}: object {} ('{}') has a vertex {:.3g} m from the {}, beyond the {:.3g} "
-                        "m that float32 geometry represents (docs/scene-format.md, \"Range\")",
-                        scene.path, i, scene.objects[i].name, far,
-                        scene.camera.given ? "camera" : "scene's centre", kMaxWorldRange);
-    }
-}
-
-// A point of the scene in the camera-relative world (FlatScene::origin), rounded to float once:
-// the difference of two floats is exact in double when their exponents differ by at most
-// 53 - 24 = 29 (and within 2^-53 of itself otherwise), so the result is the float nearest the
-// exact camera-relative point (but for a double-rounding tie).
-vec3 rebased(const glm::dvec3& p, const glm::dvec3& origin) {
-    return vec3(p - origin);
-}
-vec3 rebased(vec3 p, const glm::dvec3& origin) {
-    return rebased(glm::dvec3(p), origin);
+// The float32 range rule (docs/scene-format.md, "Range"), for object i: its mesh's extent in its
+// own space (`size`, the largest coordinate of a stored position) and its vertices' largest
+// coordinate relative to the camera or, before the camera is framed, the scene's centre (`far`).
+void check_range(const Scene& scene, size_t i, double size, double far, const char* from) {
+    const Object& o = scene.objects[i];
+    if (!(size <= kMaxWorldRange))
+        input_error("{}: object {} ('{}') spans {:.3g} m in its own space, beyond the {:.3g} m "
+                    "that float32 geometry represents (docs/scene-format.md, \"Range\")",
+                    scene.path, i, o.name, size, kMaxWorldRange);
+    if (!(far <= kMaxWorldRange))
+        input_error("{}: object {} ('{}') has a vertex {:.3g} m from the {}, beyond the {:.3g} m "
+                    "that float32 geometry represents (docs/scene-format.md, \"Range\")",
+                    scene.path, i, o.name, far, from, kMaxWorldRange);
 }
 
 // Places the camera on +Z of the bounding sphere's centre, far enough for the sphere to fit
-// the vertical field of view, keeping any of eye/target the user gave.
-void frame_camera(CameraDesc& c, vec3 lo, vec3 hi, float aspect) {
-    const vec3 centre = 0.5f * (lo + hi);
-    const float radius = std::max(0.5f * glm::length(hi - lo), 1e-6f);
-    const float half = glm::radians(0.5f * c.fov_y_degrees) * std::min(aspect, 1.0f);
+// the vertical field of view.
+void frame_camera(CameraDesc& c, const Box& world, float aspect) {
+    const glm::dvec3 centre = 0.5 * (world.lo + world.hi);
+    const double radius = std::max(0.5 * glm::length(world.hi - world.lo), 1e-6);
+    const double half = glm::radians(0.5 * double(c.fov_y_degrees)) * std::min(double(aspect), 1.0);
     c.target = centre;
-    c.eye = centre + vec3(0.0f, 0.0f, 1.05f * radius / std::sin(half));
+    c.eye = centre + glm::dvec3(0.0, 0.0, 1.05 * radius / std::sin(half));
 }
 
 } // namespace
@@ -119,8 +118,13 @@ FlatScene flatten(const Scene& input) {
     f.spp = scene.settings.spp;
     f.materials = scene.materials;
 
-    // Meshes that some object uses, each stored once.
+    if (scene.objects.empty()) input_error("{}: the scene has no objects", scene.path);
+
+    // Meshes that some object uses, each stored once, relative to the lowest corner of its
+    // bounding box (FlatScene::origin).
     std::map<uint32_t, uint32_t> mesh_slot;
+    std::vector<glm::dvec3> corner; // per slot
+    std::vector<double> extent;     // per slot: the largest stored coordinate
     for (const Object& o : scene.objects) {
         if (mesh_slot.count(o.mesh)) continue;
         const Mesh& m = scene.meshes[o.mesh];
@@ -132,7 +136,12 @@ FlatScene flatten(const Scene& input) {
         info.flags =
             (m.normals.empty() ? 0u : MESH_HAS_NORMALS) | (m.uvs.empty() ? 0u : MESH_HAS_UVS);
         info.bvh_root = NO_INDEX;
-        f.positions.insert(f.positions.end(), m.positions.begin(), m.positions.end());
+        Box box;
+        for (const glm::dvec3& p : m.positions) box.add(p);
+        const glm::dvec3 c = box.empty() ? glm::dvec3(0.0) : box.lo;
+        for (const glm::dvec3& p : m.positions) f.positions.push_back(vec3(p - c));
+        corner.push_back(c);
+        extent.push_back(box.empty() ? 0.0 : box.farthest(c));
         if (m.normals.empty())
             f.normals.resize(f.positions.size(), vec3(0.0f));
         else
@@ -147,54 +156,61 @@ FlatScene flatten(const Scene& input) {
         f.meshes.push_back(info);
     }
 
-    // The world bounds in the scene's coordinates (double: no rounding at any distance), for
-    // auto-framing; the camera's eye is then the origin of the world both engines render in.
-    if (scene.objects.empty()) input_error("{}: the scene has no objects", scene.path);
-    std::vector<ObjectExtent> extents(scene.objects.size());
-    glm::dvec3 lo(glm::dvec3(std::numeric_limits<double>::max()));
-    glm::dvec3 hi(-lo);
-    for (size_t i = 0; i < scene.objects.size(); ++i) {
-        const Object& o = scene.objects[i];
-        ObjectExtent& e = extents[i];
-        for (const vec3& p : scene.meshes[o.mesh].positions) {
-            const glm::dvec3 q(p);
-            const glm::dvec3 w(glm::dmat4(o.transform) * glm::dvec4(q, 1.0));
-            e.lo = glm::min(e.lo, w);
-            e.hi = glm::max(e.hi, w);
-            const glm::dvec3 a = glm::abs(q);
-            e.object_max = std::max(e.object_max, std::max(a.x, std::max(a.y, a.z)));
-        }
-        lo = glm::min(lo, e.lo);
-        hi = glm::max(hi, e.hi);
-    }
     CameraDesc cam = scene.camera;
     const float aspect = float(scene.settings.width) / float(std::max(scene.settings.height, 1u));
     if (!cam.given) {
-        check_range(scene, extents, 0.5 * (lo + hi));
-        frame_camera(cam, vec3(lo), vec3(hi), aspect);
+        // Framed from the world bounds in the scene's coordinates, in double.
+        std::vector<Box> boxes(scene.objects.size());
+        Box world;
+        for (size_t i = 0; i < scene.objects.size(); ++i) {
+            const Object& o = scene.objects[i];
+            for (const glm::dvec3& p : scene.meshes[o.mesh].positions)
+                boxes[i].add(glm::dvec3(o.transform * glm::dvec4(p, 1.0)));
+            world.add(boxes[i]);
+        }
+        for (size_t i = 0; i < scene.objects.size(); ++i)
+            if (!boxes[i].empty())
+                check_range(scene, i, extent[mesh_slot.at(scene.objects[i].mesh)],
+                            boxes[i].farthest(0.5 * (world.lo + world.hi)), "scene's centre");
+        frame_camera(cam, world, aspect);
     }
     check_camera(scene.path, cam, scene.settings);
-    check_range(scene, extents, glm::dvec3(cam.eye));
-    f.origin = glm::dvec3(cam.eye);
-    f.bounds_min = rebased(lo, f.origin);
-    f.bounds_max = rebased(hi, f.origin);
-    f.params.camera = camera_make(rebased(cam.eye, f.origin), rebased(cam.target, f.origin), cam.up,
-                                  cam.fov_y_degrees, scene.settings.width, scene.settings.height);
+    f.origin = cam.eye;
+    f.params.camera = camera_make(vec3(0.0f), vec3(cam.target - cam.eye), cam.up, cam.fov_y_degrees,
+                                  scene.settings.width, scene.settings.height);
 
-    // Instances: only the translation changes, T - origin.
-    for (const Object& o : scene.objects) {
-        glm::mat4 to_world = o.transform;
-        to_world[3] = vec4(rebased(vec3(o.transform[3]), f.origin), 1.0f);
+    // Instances: the linear part M as it is, the translation M c + (T - origin) for the mesh's
+    // corner c. The bounds are those of the float world the engines trace, M q + t.
+    Box world;
+    for (size_t i = 0; i < scene.objects.size(); ++i) {
+        const Object& o = scene.objects[i];
+        const uint32_t slot = mesh_slot.at(o.mesh);
+        const glm::dvec3 t =
+            glm::dmat3(o.transform) * corner[slot] + (glm::dvec3(o.transform[3]) - f.origin);
+        glm::mat4 to_world(o.transform);
+        to_world[3] = vec4(vec3(t), 1.0f);
         Instance inst{};
         store_rows(to_world, inst.to_world0, inst.to_world1, inst.to_world2);
         store_rows(glm::affineInverse(to_world), inst.to_object0, inst.to_object1, inst.to_object2);
-        inst.mesh = mesh_slot.at(o.mesh);
+        inst.mesh = slot;
         inst.material = o.material;
         inst.light_offset = NO_INDEX;
         f.instanced_triangles += scene.meshes[o.mesh].triangles.size();
         f.instances.push_back(inst);
         f.instance_names.push_back(o.name);
+
+        const MeshInfo& mesh = f.meshes[slot];
+        const glm::dmat3 linear(to_world);
+        const glm::dvec3 translation(to_world[3]);
+        Box box;
+        for (uint32_t v = 0; v < mesh.vertex_count; ++v)
+            box.add(linear * glm::dvec3(f.positions[mesh.first_vertex + v]) + translation);
+        if (box.empty()) continue;
+        check_range(scene, i, extent[slot], box.farthest(glm::dvec3(0.0)), "camera");
+        world.add(box);
     }
+    f.bounds_min = vec3(world.lo);
+    f.bounds_max = vec3(world.hi);
     f.params.max_depth = scene.settings.max_depth;
     f.params.min_depth = scene.settings.min_depth;
 
@@ -215,13 +231,16 @@ FlatScene flatten(const Scene& input) {
     // scene's size: the bounding sphere, but no larger than the camera's distance to its target,
     // so that an object far out of view cannot give those lights nearly every light sample (an
     // object at 1e10 would leave a point light a selection probability of 1e-18).
-    const double radius = std::min(0.5 * glm::length(hi - lo),
-                                   glm::length(glm::dvec3(cam.target) - glm::dvec3(cam.eye)));
+    const double radius =
+        std::min(0.5 * glm::length(world.hi - world.lo), glm::length(cam.target - cam.eye));
     const double disk = pi * radius * radius;
     std::vector<double> weights;
-    for (Light l : scene.lights) {
+    for (const LightDesc& d : scene.lights) {
+        Light l{};
+        l.type = d.type;
         // A point light's p0 is a position; a directional light's is a direction.
-        if (l.type == LIGHT_POINT) l.p0 = rebased(l.p0, f.origin);
+        l.p0 = d.type == LIGHT_POINT ? vec3(d.position - f.origin) : d.direction;
+        l.value = d.value;
         f.lights.push_back(l);
         const double lum = double(luminance(l.value));
         weights.push_back(l.type == LIGHT_POINT ? 4.0 * pi * lum : disk * lum);

@@ -16,17 +16,20 @@ namespace tp {
 // Command-line overrides of the scene's own settings (DESIGN.md, command line).
 struct SceneOverrides {
     std::optional<uint32_t> width, height, spp, max_depth, min_depth;
-    std::optional<vec3> eye, target, up;
+    std::optional<glm::dvec3> eye, target; // positions: double, as the scene keeps them
+    std::optional<vec3> up;
     std::optional<float> fov;
 };
 
 void apply_overrides(Scene& scene, const SceneOverrides& o);
 
 // The float32 range rule (docs/scene-format.md, "Range"): no vertex farther than 2^36 m (6.9e10
-// m) from the camera in any coordinate, in the world or in its object's space. The triangle
-// test's distance (shared/intersect.h) forms (v0 - o) . ((v1 - v0) x (v2 - v0)), cubic in the
-// coordinates: with every coordinate within R, |.| <= (2 sqrt(3) R)^3 = 42 R^3, below float's
-// 2^128 up to R = 2^40.9; 2^36 leaves a factor 2^14 for the light and offset arithmetic.
+// m) from the camera in any coordinate, and no object larger than that in its own space: no
+// vertex farther than 2^36 from the lowest corner of its mesh's bounding box in any coordinate
+// (the float coordinates the engines store, FlatScene::positions). The triangle test's distance
+// (shared/intersect.h) forms (v0 - o) . ((v1 - v0) x (v2 - v0)), cubic in the coordinates: with
+// every coordinate within R, |.| <= (2 sqrt(3) R)^3 = 42 R^3, below float's 2^128 up to
+// R = 2^40.9; 2^36 leaves a factor 2^14 for the light and offset arithmetic.
 constexpr double kMaxWorldRange = 0x1p36;
 
 struct FlatScene {
@@ -50,16 +53,21 @@ struct FlatScene {
     std::vector<AliasEntry> env_table; // environment-map pixels, when there is a map
 
     // World space as both engines see it is camera-relative ("large world coordinates"): the
-    // scene's point x is stored as x - origin, computed in double and rounded to float once, with
-    // origin the camera's eye. A float's spacing is proportional to its magnitude, so positions
-    // then keep the precision of their distance to the camera wherever the scene lies: at 1e5
-    // from the scene's own origin, float coordinates are multiples of 2^-7 = 0.0078 and round by
-    // up to a tenth of a pixel in the stress scene (docs/stress.md); camera-relative, by ~1e-7.
-    // Instance translations, the camera, point lights, emissive triangles and the bounds are
-    // rebased; directions (normals, directional lights, the environment) are unchanged. Positions
-    // shown to the user (path logs) add origin back.
+    // scene's point x is stored as x - origin, with origin the camera's eye, computed in double
+    // from the scene's double description (scene/scene.h) and rounded to float once. A float's
+    // spacing is proportional to its magnitude, so the world then keeps the precision of its
+    // distance to the camera wherever the scene lies. Each mesh's positions are stored relative
+    // to the lowest corner c of its own bounding box (rounded by 2^-24 of the mesh's size), and
+    // each instance's translation is M c + (T - origin) (rounded by 2^-24 of the distance to the
+    // camera). These are differences of the description's numbers (and the lowest corner moves
+    // with the vertices exactly, where a centre would round), so a scene and its camera moved
+    // together by any d that keeps those numbers exact (x + d - d == x) flatten to the same
+    // floats and render the same image bit for bit. Instance translations, the camera,
+    // point lights, emissive triangles and the bounds are rebased; directions (normals,
+    // directional lights, the environment) are unchanged. Path logs record camera-relative
+    // positions too, with origin in their header (docs/debugging.md).
     glm::dvec3 origin{0.0};
-    vec3 bounds_min{0.0f}, bounds_max{0.0f}; // world-space bounding box (camera-relative)
+    vec3 bounds_min{0.0f}, bounds_max{0.0f}; // world bounding box (camera-relative)
     uint64_t instanced_triangles = 0;        // triangles as rendered (instances counted)
     uint64_t unique_triangles = 0;           // triangles stored
     // Coincident dielectric faces merged into interfaces (dielectric_interfaces.h).

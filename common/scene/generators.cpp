@@ -47,7 +47,7 @@ Mesh make_icosphere(uint32_t subdivisions, bool inward) {
     }
     Mesh m;
     m.name = inward ? "icosphere_inward" : "icosphere";
-    m.positions = v;
+    m.positions.assign(v.begin(), v.end());
     m.normals.resize(v.size());
     m.uvs.resize(v.size());
     for (size_t i = 0; i < v.size(); ++i) {

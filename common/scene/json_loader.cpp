@@ -54,10 +54,15 @@ class Reader {
     }
 
     float number(const json& j, const std::string& field) const {
+        return float(coordinate(j, field));
+    }
+
+    // A number of a position, kept in double (scene/scene.h) but within float's range.
+    double coordinate(const json& j, const std::string& field) const {
         if (!j.is_number()) fail(field, "expected a number");
         const double v = j.get<double>();
         if (!std::isfinite(v) || std::abs(v) > 3.4e38) fail(field, "must be a finite float");
-        return float(v);
+        return v;
     }
 
     float number(const json& j, const std::string& field, float lo, float hi) const {
@@ -80,6 +85,12 @@ class Reader {
         if (!j.is_array() || j.size() != 3) fail(field, "expected an array of 3 numbers");
         return vec3(number(j[0], field + "[0]"), number(j[1], field + "[1]"),
                     number(j[2], field + "[2]"));
+    }
+
+    glm::dvec3 position(const json& j, const std::string& field) const {
+        if (!j.is_array() || j.size() != 3) fail(field, "expected an array of 3 numbers");
+        return glm::dvec3(coordinate(j[0], field + "[0]"), coordinate(j[1], field + "[1]"),
+                          coordinate(j[2], field + "[2]"));
     }
 
     vec3 color(const json& j, const std::string& field) const {
@@ -160,22 +171,23 @@ Texture load_texture_at(const Reader& r, const fs::path& file, const std::string
     }
 }
 
-glm::mat4 read_transform(const Reader& r, const json& j, const std::string& field) {
+// In double, as the scene keeps it (scene/scene.h): the translation is a position.
+glm::dmat4 read_transform(const Reader& r, const json& j, const std::string& field) {
     if (j.is_array()) { // 16 numbers, row-major
         if (j.size() != 16) r.fail(field, "a matrix needs 16 numbers (row-major 4x4)");
-        glm::mat4 m;
+        glm::dmat4 m;
         for (int row = 0; row < 4; ++row)
             for (int col = 0; col < 4; ++col)
                 m[col][row] =
-                    r.number(j[row * 4 + col], fmt::format("{}[{}]", field, row * 4 + col));
+                    r.coordinate(j[row * 4 + col], fmt::format("{}[{}]", field, row * 4 + col));
         if (m[0][3] != 0 || m[1][3] != 0 || m[2][3] != 0 || m[3][3] != 1)
             r.fail(field, "the last row must be 0 0 0 1 (affine transforms only)");
         return m;
     }
     r.keys(j, field, {"translate", "rotate", "scale"});
-    glm::mat4 m(1.0f);
+    glm::dmat4 m(1.0);
     if (j.contains("translate"))
-        m = glm::translate(m, r.vector3(j["translate"], field + ".translate"));
+        m = glm::translate(m, r.position(j["translate"], field + ".translate"));
     if (j.contains("rotate")) {
         const json& rot = j["rotate"];
         std::vector<const json*> list;
@@ -184,7 +196,7 @@ glm::mat4 read_transform(const Reader& r, const json& j, const std::string& fiel
         else
             list.push_back(&rot);
         // Listed rotations apply in order, so the first is innermost: M = R_n ... R_1.
-        glm::mat4 rm(1.0f);
+        glm::dmat4 rm(1.0);
         for (size_t i = 0; i < list.size(); ++i) {
             const std::string f =
                 rot.is_array() ? fmt::format("{}.rotate[{}]", field, i) : field + ".rotate";
@@ -193,15 +205,15 @@ glm::mat4 read_transform(const Reader& r, const json& j, const std::string& fiel
             // Normalized in double: |axis| overflows float for components beyond ~1.8e19.
             const glm::dvec3 unit = glm::dvec3(axis) / glm::length(glm::dvec3(axis));
             if (!is_finite3(vec3(unit))) r.fail(f + ".axis", "must not be zero");
-            const float deg = r.number(r.required(*list[i], f, "degrees"), f + ".degrees");
-            rm = glm::rotate(glm::mat4(1.0f), glm::radians(deg), vec3(unit)) * rm;
+            const double deg = r.number(r.required(*list[i], f, "degrees"), f + ".degrees");
+            rm = glm::rotate(glm::dmat4(1.0), glm::radians(deg), unit) * rm;
         }
         m = m * rm;
     }
     if (j.contains("scale")) {
         const json& s = j["scale"];
-        const vec3 sv =
-            s.is_number() ? vec3(r.number(s, field + ".scale")) : r.vector3(s, field + ".scale");
+        const glm::dvec3 sv = s.is_number() ? glm::dvec3(r.coordinate(s, field + ".scale"))
+                                            : r.position(s, field + ".scale");
         m = glm::scale(m, sv);
     }
     return m;
@@ -213,7 +225,7 @@ Mesh inline_mesh(const Reader& r, const json& j, const std::string& field) {
     if (!verts.is_array() || verts.empty())
         r.fail(field + ".vertices", "expected a non-empty array of [x, y, z]");
     for (size_t i = 0; i < verts.size(); ++i)
-        m.positions.push_back(r.vector3(verts[i], fmt::format("{}.vertices[{}]", field, i)));
+        m.positions.push_back(r.position(verts[i], fmt::format("{}.vertices[{}]", field, i)));
     auto index = [&](const json& e, const std::string& f) {
         const uint32_t v = r.count(e, f, 0, 0xFFFFFFFEu);
         if (v >= m.positions.size())
@@ -373,8 +385,8 @@ Scene load_json_scene(const std::string& path, std::vector<std::string>& warning
     if (root.contains("camera")) {
         const json& c = root["camera"];
         r.keys(c, "camera", {"eye", "target", "up", "fov"});
-        scene.camera.eye = r.vector3(r.required(c, "camera", "eye"), "camera.eye");
-        scene.camera.target = r.vector3(r.required(c, "camera", "target"), "camera.target");
+        scene.camera.eye = r.position(r.required(c, "camera", "eye"), "camera.eye");
+        scene.camera.target = r.position(r.required(c, "camera", "target"), "camera.target");
         if (c.contains("up")) scene.camera.up = r.vector3(c["up"], "camera.up");
         if (c.contains("fov"))
             scene.camera.fov_y_degrees = r.number(c["fov"], "camera.fov", 1e-3f, 179.0f);
@@ -446,9 +458,9 @@ Scene load_json_scene(const std::string& path, std::vector<std::string>& warning
                 r.fail(f + ".material", fmt::format("no material named '{}'", mat));
             material = it->second;
         }
-        const glm::mat4 xf = o.contains("transform")
-                                 ? read_transform(r, o["transform"], f + ".transform")
-                                 : glm::mat4(1.0f);
+        const glm::dmat4 xf = o.contains("transform")
+                                  ? read_transform(r, o["transform"], f + ".transform")
+                                  : glm::dmat4(1.0);
         const double det = glm::determinant(glm::dmat3(xf));
         if (!(std::abs(det) > 1e-30)) r.fail(f + ".transform", "is singular (zero scale?)");
         for (const ObjPart& part : mit->second.parts) {
@@ -471,18 +483,18 @@ Scene load_json_scene(const std::string& path, std::vector<std::string>& warning
             const std::string f = fmt::format("lights[{}]", i);
             const json& l = lights[i];
             const std::string type = r.string(r.required(l, f, "type"), f + ".type");
-            Light light{};
+            LightDesc light;
             if (type == "point") {
                 r.keys(l, f, {"type", "position", "intensity"});
                 light.type = LIGHT_POINT;
-                light.p0 = r.vector3(r.required(l, f, "position"), f + ".position");
+                light.position = r.position(r.required(l, f, "position"), f + ".position");
                 light.value = r.color(r.required(l, f, "intensity"), f + ".intensity");
             } else if (type == "directional") {
                 r.keys(l, f, {"type", "direction", "irradiance"});
                 light.type = LIGHT_DIRECTIONAL;
                 const vec3 d = r.vector3(r.required(l, f, "direction"), f + ".direction");
                 if (glm::length(d) == 0.0f) r.fail(f + ".direction", "must not be zero");
-                light.p0 = -glm::normalize(d); // stored towards the light
+                light.direction = -glm::normalize(d); // towards the light
                 light.value = r.color(r.required(l, f, "irradiance"), f + ".irradiance");
             } else {
                 r.fail(f + ".type",

@@ -6,6 +6,7 @@
 #include "util/error.h"
 
 #include <array>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 #include <map>
@@ -145,7 +146,8 @@ std::vector<ObjPart> load_obj(const std::string& path_str, Scene& scene, uint32_
                               std::vector<std::string>& warnings) {
     const fs::path path(path_str);
     LineReader in(path_str);
-    std::vector<vec3> v, vn;
+    std::vector<glm::dvec3> v;
+    std::vector<vec3> vn;
     std::vector<vec2> vt;
     std::map<std::string, uint32_t> materials;
     std::vector<Group> groups;
@@ -166,8 +168,9 @@ std::vector<ObjPart> load_obj(const std::string& path_str, Scene& scene, uint32_
         if (key == "v") {
             if (tok.size() != 4 && tok.size() != 5)
                 in.fail("'v' needs 3 coordinates (and an optional w)");
-            const vec3 p = in.vec3_at(tok, 1);
-            if (!is_finite3(p)) in.fail("vertex position is not finite");
+            const glm::dvec3 p = in.position_at(tok, 1);
+            if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+                in.fail("vertex position is not finite");
             v.push_back(p);
         } else if (key == "vt") {
             if (tok.size() < 2 || tok.size() > 4) in.fail("'vt' needs 1 to 3 coordinates");

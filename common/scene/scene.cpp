@@ -57,10 +57,11 @@ void finalize_mesh(Mesh& mesh, const std::string& where, uint64_t& skipped_trian
         input_error("{}: {} normals for {} positions", where, mesh.normals.size(), nv);
     if (!mesh.uvs.empty() && mesh.uvs.size() != nv)
         input_error("{}: {} uvs for {} positions", where, mesh.uvs.size(), nv);
-    for (size_t i = 0; i < nv; ++i)
-        if (!is_finite3(mesh.positions[i]))
-            input_error("{}: vertex {} is not finite ({}, {}, {})", where, i, mesh.positions[i].x,
-                        mesh.positions[i].y, mesh.positions[i].z);
+    for (size_t i = 0; i < nv; ++i) {
+        const glm::dvec3 p = mesh.positions[i];
+        if (!std::isfinite(p.x) || !std::isfinite(p.y) || !std::isfinite(p.z))
+            input_error("{}: vertex {} is not finite ({}, {}, {})", where, i, p.x, p.y, p.z);
+    }
     for (size_t i = 0; i < mesh.normals.size(); ++i)
         if (!is_finite3(mesh.normals[i])) input_error("{}: normal {} is not finite", where, i);
     for (size_t i = 0; i < mesh.uvs.size(); ++i)
@@ -76,8 +77,8 @@ void finalize_mesh(Mesh& mesh, const std::string& where, uint64_t& skipped_trian
                 input_error("{}: triangle {} uses vertex {} but there are {}", where, t, tri[k],
                             nv);
         // Zero area in double precision: the triangle can never be hit, so it is skipped.
-        const glm::dvec3 a(mesh.positions[tri.x]), b(mesh.positions[tri.y]),
-            c(mesh.positions[tri.z]);
+        const glm::dvec3 a = mesh.positions[tri.x], b = mesh.positions[tri.y],
+                         c = mesh.positions[tri.z];
         const glm::dvec3 n = glm::cross(b - a, c - a);
         if (n.x == 0.0 && n.y == 0.0 && n.z == 0.0) {
             ++skipped_triangles;

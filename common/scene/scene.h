@@ -1,12 +1,19 @@
 // The scene as the loaders describe it: named materials, meshes, textures, objects (instances
 // of meshes with a transform), explicit lights and the environment. flatten.h turns it into
 // the arrays both engines render from.
+//
+// Positions are kept exactly as given, in double: mesh vertices, object translations, the
+// camera's eye and target and point lights. A float at 1e4 m is a multiple of 2^-10 m (1 mm),
+// so rounding them here would make a scene's image depend on where it sits; flatten() moves
+// everything next to the camera first and rounds to float only then (flatten.h, FlatScene).
+// Directions, colours and the rest are float: they do not depend on where the scene sits.
 #pragma once
 
 #include "shared/types.h"
 
 #include <cstdint>
 #include <glm/mat4x4.hpp>
+#include <glm/vec3.hpp>
 #include <string>
 #include <vector>
 
@@ -21,9 +28,9 @@ struct Texture {
 
 struct Mesh {
     std::string name;
-    std::vector<vec3> positions;
-    std::vector<vec3> normals; // empty, or one per position
-    std::vector<vec2> uvs;     // empty, or one per position
+    std::vector<glm::dvec3> positions; // in the mesh's own space
+    std::vector<vec3> normals;         // empty, or one per position
+    std::vector<vec2> uvs;             // empty, or one per position
     std::vector<uvec3> triangles;
 };
 
@@ -32,12 +39,20 @@ struct Object {
     std::string name;
     uint32_t mesh = 0;
     uint32_t material = 0;
-    glm::mat4 transform{1.0f}; // object to world
+    glm::dmat4 transform{1.0}; // object to world
+};
+
+// An explicit light: a point light at `position`, or a directional light.
+struct LightDesc {
+    uint32_t type = LIGHT_POINT; // LIGHT_POINT or LIGHT_DIRECTIONAL
+    glm::dvec3 position{0.0};    // point: where it is
+    vec3 direction{0.0f};        // directional: unit vector towards the light
+    vec3 value{0.0f};            // point: intensity (W/sr); directional: irradiance (W/m^2)
 };
 
 struct CameraDesc {
-    vec3 eye{0.0f, 0.0f, 5.0f};
-    vec3 target{0.0f};
+    glm::dvec3 eye{0.0, 0.0, 5.0};
+    glm::dvec3 target{0.0};
     vec3 up{0.0f, 1.0f, 0.0f};
     float fov_y_degrees = 45.0f;
     bool given = false; // false: frame the scene automatically
@@ -69,7 +84,7 @@ struct Scene {
     std::vector<Texture> textures;
     std::vector<Mesh> meshes;
     std::vector<Object> objects;
-    std::vector<Light> lights; // point and directional; emitters and environment are derived
+    std::vector<LightDesc> lights; // emitters and the environment are derived
     EnvironmentDesc environment;
     uint64_t skipped_triangles = 0; // degenerate triangles dropped while loading
 };

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstring>
 #include <filesystem>
+#include <limits>
 
 namespace tp {
 
@@ -56,6 +57,18 @@ float LineReader::parse_number(std::string_view s) const {
     return v;
 }
 
+double LineReader::parse_coordinate(std::string_view s) const {
+    double v = 0.0;
+    const char* end = s.data() + s.size();
+    const char* begin = s.data() + (!s.empty() && s[0] == '+' ? 1 : 0);
+    auto [ptr, ec] = std::from_chars(begin, end, v);
+    if (ec == std::errc::result_out_of_range) fail("number '{}' is out of float range", s);
+    if (ec != std::errc() || ptr != end) fail("'{}' is not a number", s);
+    if (std::isfinite(v) && std::abs(v) > double(std::numeric_limits<float>::max()))
+        fail("number '{}' is out of float range", s);
+    return v;
+}
+
 long long LineReader::parse_integer(std::string_view s) const {
     long long v = 0;
     const char* end = s.data() + s.size();
@@ -85,6 +98,12 @@ vec3 LineReader::color(const std::vector<std::string_view>& tok) const {
     if (tok.size() == 2) return vec3(number(tok, 1));
     if (tok.size() != 4) fail("'{}' needs 3 values (r g b), got {}", tok[0], tok.size() - 1);
     return vec3(number(tok, 1), number(tok, 2), number(tok, 3));
+}
+
+glm::dvec3 LineReader::position_at(const std::vector<std::string_view>& tok, size_t i) const {
+    if (i + 2 >= tok.size()) fail("'{}' needs 3 values", tok[0]);
+    return glm::dvec3(parse_coordinate(tok[i]), parse_coordinate(tok[i + 1]),
+                      parse_coordinate(tok[i + 2]));
 }
 
 std::string LineReader::rest_after(size_t n) const {

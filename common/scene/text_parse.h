@@ -6,6 +6,7 @@
 #include "util/error.h"
 
 #include <fstream>
+#include <glm/vec3.hpp>
 #include <string>
 #include <string_view>
 #include <type_traits>
@@ -48,11 +49,14 @@ class LineReader {
 
     // Strict conversions: the whole token must be a number.
     float parse_number(std::string_view s) const;
+    // A coordinate of a position, kept in double (scene/scene.h) but within float's range.
+    double parse_coordinate(std::string_view s) const;
     long long parse_integer(std::string_view s) const;
 
     float number(const std::vector<std::string_view>& tok, size_t i) const;
     long long integer(const std::vector<std::string_view>& tok, size_t i) const;
     vec3 vec3_at(const std::vector<std::string_view>& tok, size_t i) const;
+    glm::dvec3 position_at(const std::vector<std::string_view>& tok, size_t i) const;
     // "K r g b" or the grey shorthand "K v".
     vec3 color(const std::vector<std::string_view>& tok) const;
     // The text of the current line after its first n tokens, trimmed (names with spaces).

@@ -203,7 +203,7 @@ FlatScene floor_scene(float half, float floor_scale_in_instance = 1.0f) {
     s.material_names = {"grey"};
     s.meshes = {make_quad(), make_box(), make_icosphere(2, false)};
     const float mesh_half = half / floor_scale_in_instance;
-    for (vec3& p : s.meshes[0].positions) p *= mesh_half;
+    for (glm::dvec3& p : s.meshes[0].positions) p *= double(mesh_half);
     s.objects = {{"floor", 0, 0, glm::scale(glm::mat4(1.0f), vec3(floor_scale_in_instance))},
                  {"box", 1, 0, glm::mat4(1.0f)},
                  {"sphere", 2, 0, glm::mat4(1.0f)}};
@@ -229,12 +229,13 @@ TEST_CASE("meshes far larger than the scene's content get the exact triangle tes
     const std::vector<BlasGeometry> geoms = blas_geometries(scene, exact);
     REQUIRE(geoms.size() == 3);
     CHECK((geoms[0].exact && !geoms[1].exact && !geoms[2].exact));
-    // One box per triangle, in triangle order: the quad's triangles (0, 1, 2) and (0, 2, 3).
+    // One box per triangle, in triangle order: the quad's triangles (0, 1, 2) and (0, 2, 3), in
+    // the mesh's stored coordinates, relative to its lowest corner (-1e8, 0, -1e8) (flatten.h).
     const std::vector<VkAabbPositionsKHR> boxes = triangle_boxes(scene, geoms[0]);
     REQUIRE(boxes.size() == 2);
-    CHECK((boxes[0].minX == -1e8f && boxes[0].maxX == 1e8f && boxes[0].minZ == -1e8f &&
-           boxes[0].maxZ == 1e8f && boxes[0].minY == 0.0f && boxes[0].maxY == 0.0f));
-    CHECK((boxes[1].minX == -1e8f && boxes[1].maxX == 1e8f));
+    CHECK((boxes[0].minX == 0.0f && boxes[0].maxX == 2e8f && boxes[0].minZ == 0.0f &&
+           boxes[0].maxZ == 2e8f && boxes[0].minY == 0.0f && boxes[0].maxY == 0.0f));
+    CHECK((boxes[1].minX == 0.0f && boxes[1].maxX == 2e8f));
     // Its instance selects the procedural hit group; the others the triangle group.
     const auto records = instance_records(scene, {0xA00, 0xB00, 0xC00}, exact);
     REQUIRE(records.size() == 3);

@@ -58,8 +58,13 @@ TEST_CASE("stress GPU: Phong extremes in GLSL", "[stress][gpu]") {
     CHECK(context().instance().validation_messages() == 0);
 }
 
-TEST_CASE("stress GPU: scale and translation in compute mode", "[stress][gpu]") {
+TEST_CASE("stress GPU: scale in compute mode", "[stress][gpu]") {
     require_all(scale_cases(gpu(), gpu_size()));
+}
+
+// Regression (issue 23, item 2): see stress_cpu_test.cpp.
+TEST_CASE("stress GPU: a scene moved by 1e2 to 1e6 in compute mode", "[stress][gpu]") {
+    require_all(position_cases(gpu(), gpu_size()));
 }
 
 TEST_CASE("stress GPU: far and huge objects in compute mode", "[stress][gpu]") {

@@ -23,7 +23,7 @@ tp::Material dielectric(float ior, vec3 tf) {
 
 // Cubes of edge 0.5 centred at (0.5 k, 0, 0), k = 0, 1, ...: neighbours touch.
 tp::Scene row_of_cubes(const std::vector<tp::Material>& materials,
-                       const glm::mat4& last = glm::mat4(1.0f)) {
+                       const glm::dmat4& last = glm::dmat4(1.0)) {
     tp::Scene s;
     s.path = "cubes";
     s.meshes = {tp::make_box()};
@@ -54,7 +54,7 @@ const tp::Object* find(const tp::Scene& s, const std::string& name) {
 // The world-space geometric normal of triangle t of object o (counter-clockwise = front).
 vec3 world_normal(const tp::Scene& s, const tp::Object& o, size_t t) {
     const tp::Mesh& m = s.meshes[o.mesh];
-    const auto p = [&](uint32_t v) { return vec3(o.transform * glm::vec4(m.positions[v], 1.0f)); };
+    const auto p = [&](uint32_t v) { return vec3(o.transform * glm::dvec4(m.positions[v], 1.0)); };
     const tp::uvec3 tri = m.triangles[t];
     return glm::normalize(glm::cross(p(tri.y) - p(tri.x), p(tri.z) - p(tri.x)));
 }
@@ -82,13 +82,13 @@ TEST_CASE("touching dielectric cubes share one interface per face", "[unit][scen
         // Only the vertices the triangles use: 4 per remaining square face, not shared.
         CHECK(s.meshes[o->mesh].positions.size() == 2 * triangles);
     }
-    for (const auto& [name, x] : {std::pair<std::string, float>{"cube0|cube1", 0.25f},
-                                  std::pair<std::string, float>{"cube1|cube2", 0.75f}}) {
+    for (const auto& [name, x] : {std::pair<std::string, double>{"cube0|cube1", 0.25},
+                                  std::pair<std::string, double>{"cube1|cube2", 0.75}}) {
         INFO(name);
         const tp::Object& o = *find(s, name);
         for (size_t t = 0; t < 2; ++t) CHECK(world_normal(s, o, t) == vec3(1, 0, 0));
-        for (const vec3& p : s.meshes[o.mesh].positions)
-            CHECK((o.transform * glm::vec4(p, 1.0f)).x == x);
+        for (const glm::dvec3& p : s.meshes[o.mesh].positions)
+            CHECK((o.transform * glm::dvec4(p, 1.0)).x == x);
     }
     // Material::ior is n_inside / n_outside with the normal pointing outside: n_left / n_right.
     // The tint is both objects' (a crossing was filtered by both surfaces it replaces).

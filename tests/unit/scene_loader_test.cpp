@@ -82,8 +82,8 @@ TEST_CASE("OBJ and MTL: statements and indices and the material mapping", "[scen
     CHECK(quad.normals.size() == 4);
     CHECK(quad.triangles[1] == tp::uvec3(0, 2, 3));
     const tp::Mesh& negative = s.meshes[s.objects[1].mesh];
-    CHECK(negative.positions[0] == tp::vec3(0, 0, 0)); // -4 of 4 vertices is the first
-    CHECK(negative.positions[2] == tp::vec3(1, 1, 0));
+    CHECK(negative.positions[0] == glm::dvec3(0, 0, 0)); // -4 of 4 vertices is the first
+    CHECK(negative.positions[2] == glm::dvec3(1, 1, 0));
     CHECK(negative.uvs.empty());
     CHECK(s.meshes[s.objects[3].mesh].normals.empty());
     // An emitter exists, so no environment is added.
