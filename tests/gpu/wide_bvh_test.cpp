@@ -225,8 +225,9 @@ TEST_CASE("wide BVH: decoded boxes contain their content on random soups", "[wid
     // Triangles far smaller than the ulp of their coordinates' distance from the origin
     // (1e-4 at 1e6, where floats are 0.0625 apart): boxes narrower than one step of any scale.
     check_wide(soup(2, 2000, 1e6, 1.0, 1e-4, 2, 5));
-    // Coordinates up to the range rule's 2^36 (scene/flatten.h), mixed sizes, many degenerate.
-    check_wide(soup(3, 2000, 0.0, 0x1p35, 0x1p29, 1, 3));
+    // Coordinates up to the range rule's 2^36 (scene/flatten.h): a mesh just under 2^36 wide,
+    // stored relative to its lowest corner; mixed sizes, many degenerate.
+    check_wide(soup(3, 2000, 0.0, 0x1p35 - 0x1p29, 0x1p29, 1, 3));
     // All triangles degenerate, half of them single points.
     check_wide(soup(4, 500, -3.0, 2.0, 1.0, 1, 1));
     // A few triangles: a tree that is one leaf.
