@@ -50,22 +50,20 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
     st.threads =
         uint32_t(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
 
-    FlatScene seeded = scene;
-    seeded.params.seed = options.seed;
-    const uint32_t W = seeded.params.camera.width, H = seeded.params.camera.height;
+    const uint32_t W = scene.params.camera.width, H = scene.params.camera.height;
 
     const auto t_build = std::chrono::steady_clock::now();
-    const EmbreeAccel accel(seeded);
+    const EmbreeAccel accel(scene);
     st.build_time_s = seconds_since(t_build);
     st.accel_bytes = accel.memory_bytes();
-    const SceneFeatures features = analyze_features(seeded);
+    const SceneFeatures features = analyze_features(scene);
     st.scene_features = features.names();
-    st.feature_mask = render_feature_mask(seeded, options.all_features);
+    st.feature_mask = render_feature_mask(scene, options.all_features);
     st.feature_variant = options.all_features ? "all" : "scene";
-    const CpuIntegrator integrator(seeded, accel, st.feature_mask);
+    const CpuIntegrator integrator(scene, accel, st.feature_mask, options.seed);
 
     const DebugRequest& debug = options.debug;
-    const CpuDebugViews views(seeded, accel, debug.integrator);
+    const CpuDebugViews views(scene, accel, debug.integrator, options.seed);
     const bool view = debug.integrator != INTEGRATOR_PATH;
 
     result.film = Film(W, H);
@@ -130,7 +128,7 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
         tbb::parallel_for(uint32_t(0), H, [&](uint32_t y) {
             for (uint32_t x = 0; x < W; ++x)
                 result.debug.aovs[size_t(y) * W + x] =
-                    views.primary_aov(camera_center_ray(seeded.params.camera, x, y));
+                    views.primary_aov(camera_center_ray(scene.params.camera, x, y));
         });
     }
     if (debug.log) {

@@ -1,18 +1,19 @@
 // The CPU's debug outputs besides path logs (docs/debugging.md): the AOVs of a pixel and the
-// debug views (`--integrator normals|albedo|depth|cost`), from the camera ray's first hit, as
-// shaders/debug.glsl computes them on the GPU.
+// debug views (`--integrator normals|albedo|depth|cost`), from the camera ray's first hit, with
+// the shared bodies of shared/debug_views.h.
 #pragma once
 
+#include "cpu_ref/cpu_engine.h"
 #include "cpu_ref/embree_accel.h"
-#include "cpu_ref/scene_access.h"
 #include "shared/path_log.h"
 
 namespace tp {
 
 class CpuDebugViews {
   public:
-    CpuDebugViews(const FlatScene& scene, const EmbreeAccel& accel, uint32_t integrator)
-        : access_(scene), accel_(accel), integrator_(integrator) {}
+    CpuDebugViews(const FlatScene& scene, const EmbreeAccel& accel, uint32_t integrator,
+                  uint32_t seed)
+        : state_(scene, seed), accel_(accel), integrator_(integrator) {}
 
     // AOVs of the ray's first hit (PixelAov of shared/path_log.h).
     PixelAov primary_aov(const Ray& ray) const;
@@ -23,7 +24,8 @@ class CpuDebugViews {
     vec3 radiance(uint32_t x, uint32_t y, uint32_t sample_index) const;
 
   private:
-    SceneAccess access_;
+    using Engine = CpuEngine<kCpuFixedFeatures, false>;
+    CpuSceneState state_;
     const EmbreeAccel& accel_;
     uint32_t integrator_;
 };

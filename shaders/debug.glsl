@@ -1,7 +1,7 @@
 // The debug variant of the render shaders (compiled with -DTP_DEBUG_SHADER; the normal variant
 // does not contain any of this, docs/debugging.md): the debug buffer that path logs are written
 // to, the AOV buffer, and the debug views. Include it after the trace include and before
-// integrator.glsl, whose PATH_LOG(...) statements it switches on.
+// integrator.glsl, whose path log (shared/integrator.h, PATH_LOG) it switches on.
 //
 // Why a separate SPIR-V module and not a branch on a push constant: a path record is 70 words
 // that the loop keeps live from the hit to the end of the bounce; even behind a branch that is
@@ -26,7 +26,7 @@ layout(scalar, set = 0, binding = BINDING_AOV) buffer AovBuffer {
 // Set by the log pass for the debug pixel only: path_log_emit writes nothing otherwise.
 bool g_path_log_on = false;
 
-#define PATH_LOG(x) x
+const bool path_log_recording = true;
 
 void path_log_emit(PathVertex v, uint termination) {
     if (!g_path_log_on) return;
@@ -35,28 +35,7 @@ void path_log_emit(PathVertex v, uint termination) {
     if (i < debug_header.capacity) debug_records[i] = v;
 }
 
-// The camera ray's first hit as AOVs (cpu_ref/debug_views.cpp is the CPU's).
-PixelAov primary_aov(Ray ray) {
-    PixelAov a;
-    a.albedo = vec3(0.0f);
-    a.depth = FLOAT_MAX;
-    a.normal = vec3(0.0f);
-    a.instance = NO_INDEX;
-    a.material = NO_INDEX;
-    a.pad0 = 0u;
-    a.pad1 = 0u;
-    a.pad2 = 0u;
-    TraceHit hit;
-    if (!trace_closest(ray, hit)) return a;
-    SurfacePoint sp = scene_surface(hit);
-    Material m = scene_material(hit.instance, sp.uv);
-    a.albedo = material_albedo(m);
-    a.depth = hit.t;
-    a.normal = sp.ns;
-    a.instance = hit.instance;
-    a.material = instances[hit.instance].material;
-    return a;
-}
+#include "shared/debug_views.h"
 
 // A debug view's value for sample `sample_index` of pixel (x, y): the camera ray jittered as
 // the path loop jitters it, so the views are antialiased like the image.
@@ -77,10 +56,7 @@ vec3 debug_view_radiance(uint x, uint y, uint sample_index) {
         return vec3(0.0f);
 #endif
     }
-    if (a.instance == NO_INDEX) return vec3(0.0f);
-    if (integrator == INTEGRATOR_NORMALS) return 0.5f * a.normal + 0.5f;
-    if (integrator == INTEGRATOR_ALBEDO) return a.albedo;
-    return vec3(a.depth);
+    return debug_view_value(a, integrator);
 }
 
 #endif // TP_SHADERS_DEBUG_GLSL

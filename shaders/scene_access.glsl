@@ -1,5 +1,6 @@
-// The GPU engine's reads of the scene buffers: cpu_ref/scene_access.h line by line, with
-// buffer loads for vector indexing, handing the values to the same shared functions.
+// The GPU engine's scene reads: the storage buffers of bindings.glsl under the names that
+// shared/scene_access.h reads, the feature mask as a specialization constant (features.glsl),
+// and its two hooks.
 #ifndef TP_SHADERS_SCENE_ACCESS_GLSL
 #define TP_SHADERS_SCENE_ACCESS_GLSL
 
@@ -10,81 +11,15 @@
 #include "shared/texture.h"
 #include "trace_hit.glsl"
 
-// Every read below is restricted to the pipeline's feature mask (features.glsl, scene_features):
-// what the scene cannot use is compiled out.
-
-// World-space point, normals and uv of a hit (uv only with textures, its one use).
-SurfacePoint scene_surface(TraceHit h) {
-    Instance inst = instances[h.instance];
-    MeshInfo m = meshes[inst.mesh];
-    uvec3 t = triangles[m.first_triangle + h.primitive];
-    uint base = m.first_vertex;
-    SurfacePoint sp = surface_point(inst, positions[base + t.x], positions[base + t.y],
-                                    positions[base + t.z], h.bary);
-    if ((m.flags & MESH_HAS_NORMALS) != 0u)
-        surface_set_shading_normal(sp, inst, normals[base + t.x], normals[base + t.y],
-                                   normals[base + t.z], h.bary);
-    if (feature_on(scene_features, FEATURE_TEXTURES) && (m.flags & MESH_HAS_UVS) != 0u)
-        sp.uv = barycentric_mix2(uvs[base + t.x], uvs[base + t.y], uvs[base + t.z], h.bary);
-    return sp;
+// Computed at each hit: a buffer of them would be one more read per hit.
+InstanceErrorTerms scene_error_terms(uint instance) {
+    return instance_error_terms(instances[instance]);
 }
 
-vec3 scene_texture(int index, vec2 st, bool clamp_t) {
-    TextureInfo info = textures[index];
-    TexelFootprint fp = texture_footprint(st, info.width, info.height, clamp_t);
-    uint o = info.offset;
-    return texture_bilerp(texels[o + fp.i00], texels[o + fp.i10], texels[o + fp.i01],
-                          texels[o + fp.i11], fp.f);
+uint scene_env_table_size() {
+    return batch.env_table_size;
 }
 
-// The instance's material with its diffuse texture applied at uv.
-Material scene_material(uint instance, vec2 uv) {
-    Material m = materials[instances[instance].material];
-    if (feature_on(scene_features, FEATURE_TEXTURES) && m.kd_texture != NO_TEXTURE) m.kd *= scene_texture(m.kd_texture, uv_to_image(uv), false);
-    return m;
-}
-
-float scene_light_selection_pdf(uint i) {
-    return light_table[i].pdf;
-}
-
-// Radiance arriving from the environment along direction d (unit, world space).
-vec3 scene_environment_radiance(vec3 d) {
-    Light env = lights[params.env_light];
-    if (!feature_on(scene_features, FEATURE_ENV_MAP) || params.env_texture == NO_TEXTURE)
-        return env.value;
-    return env.value *
-           scene_texture(params.env_texture, environment_map_coords(d, params.env_rotation), true);
-}
-
-// Solid-angle density with which light sampling picks direction d from the environment,
-// given that the environment was chosen.
-float scene_environment_pdf(vec3 d) {
-    if (!feature_on(scene_features, FEATURE_ENV_MAP) || params.env_texture == NO_TEXTURE)
-        return INV_FOUR_PI;
-    if (batch.env_table_size == 0u) return 0.0f;
-    TextureInfo info = textures[params.env_texture];
-    vec2 st = environment_map_coords(d, params.env_rotation);
-    uint pixel = environment_map_pixel(st, info.width, info.height);
-    return environment_map_pdf(env_table[pixel].pdf, info.width, info.height, sin(st.y * PI));
-}
-
-// Samples light i from point p; the environment map's pixel is drawn with the 32 random bits
-// env_slot_bits and the number env_coin.
-LightSample scene_sample_light(uint i, vec3 p, vec2 u, uint env_slot_bits, float env_coin) {
-    Light l = lights[i];
-    if (!feature_on(scene_features, FEATURE_ENV_MAP) || l.type != LIGHT_ENVIRONMENT ||
-        params.env_texture == NO_TEXTURE)
-        return sample_light_in(scene_features, l, p, u);
-    if (batch.env_table_size == 0u) return light_sample_none();
-    TextureInfo info = textures[params.env_texture];
-    uint slot = alias_slot_from_bits(env_slot_bits, batch.env_table_size);
-    AliasEntry e = env_table[slot];
-    uint pixel = alias_resolve(slot, e.prob, e.alias, env_coin);
-    LightSample ls = sample_environment_map(pixel, env_table[pixel].pdf, info.width, info.height,
-                                            params.env_rotation, u);
-    if (ls.pdf > 0.0f) ls.radiance = scene_environment_radiance(ls.wi);
-    return ls;
-}
+#include "shared/scene_access.h"
 
 #endif // TP_SHADERS_SCENE_ACCESS_GLSL

@@ -56,6 +56,10 @@ const uint BVH_INSTANCE_FLAG = 0x80000000u;
 // made the specialized loops 3-4 % slower per spp here (docs/gpu.md, "Shadow ray after
 // scattering").
 const bool TRACE_SHADOW_AFTER_SCATTER = false;
+// The watertight triangle test re-tests a surface within the offset bound (shared/offset.h).
+const float TRACE_OFFSET_SLACK = 1.0f;
+// Triangle lights' stored normals (shared/lights.h, light_normal).
+const bool SCENE_LIGHT_NORMAL_FROM_VERTICES = false;
 
 #ifdef TP_DEBUG_SHADER
 // The traversal cost the cost view shows (debug.glsl): nodes visited and triangles tested by
@@ -153,11 +157,7 @@ bool bvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
                     // BvhTriangle words: the primitive in a.w; with one level its instance in b.w.
                     hit.instance = two_level ? inst : floatBitsToUint(b.w);
                     hit.primitive = floatBitsToUint(a.w);
-#ifdef TP_BUG_SWAP_BARY // planted bug of the debugging tests (tests/gpu/debug_workflow_test.cpp)
-                    hit.bary = vec2(tuv.z, tuv.y);
-#else
                     hit.bary = vec2(tuv.y, tuv.z);
-#endif
                     if (any_hit) return true;
                 }
             }

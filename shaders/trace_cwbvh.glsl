@@ -41,6 +41,10 @@ layout(std430, set = 0, binding = BINDING_BVH_TRIS) readonly buffer BvhTriangleB
 
 // As in trace_bvh.glsl: the shadow ray is traced where the light sample is drawn.
 const bool TRACE_SHADOW_AFTER_SCATTER = false;
+// The same watertight triangle test as trace_bvh.glsl (shared/offset.h).
+const float TRACE_OFFSET_SLACK = 1.0f;
+// Triangle lights' stored normals (shared/lights.h, light_normal).
+const bool SCENE_LIGHT_NORMAL_FROM_VERTICES = false;
 
 #ifdef TP_DEBUG_SHADER
 // Nodes visited and triangles tested, for the cost view (debug.glsl); debug variant only.

@@ -33,6 +33,13 @@ layout(set = 0, binding = BINDING_TLAS) uniform accelerationStructureEXT tlas;
 // surface point and the material are dead: -12 % per spp of the all-features loop on the H200
 // (docs/gpu.md, "Shadow ray after scattering").
 const bool TRACE_SHADOW_AFTER_SCATTER = true;
+// The driver's traversal re-tests a surface less precisely than the offset bound assumes
+// (shared/offset.h): measured, 4 times the bound is enough (docs/stress.md).
+const float TRACE_OFFSET_SLACK = 4.0f;
+// Triangle lights' normals from their vertices (shared/lights.h, light_normal): here the 12
+// more bytes per light read cost more than the cross product (docs/gpu.md, "Stored light
+// normal").
+const bool SCENE_LIGHT_NORMAL_FROM_VERTICES = true;
 
 layout(location = RT_PAYLOAD_HIT) rayPayloadEXT TraceHit rt_hit;
 layout(location = RT_PAYLOAD_SHADOW) rayPayloadEXT uint rt_occluded;

@@ -283,7 +283,7 @@ int main(int argc, char** argv) {
     flat.params.seed = 1;
     const uint32_t features = render_feature_mask(flat, false);
     EmbreeAccel accel(flat);
-    CpuIntegrator integrator(flat, accel, FEATURES_ALL);
+    CpuIntegrator integrator(flat, accel, FEATURES_ALL, flat.params.seed);
     // The queries of every path: each vertex's incoming ray (camera: bounce 0, else extension),
     // each traced shadow ray. The log has no light distance, so a shadow ray's tmax is its
     // distance to the first surface along light_wi when the path found it unoccluded (the

@@ -112,11 +112,7 @@ inline float fresnel_dielectric(float cos_i, float eta) {
     float sin2_t = (1.0f - cos_i * cos_i) / (eta * eta);
     if (sin2_t >= 1.0f) return 1.0f;
     float cos_t = safe_sqrt(1.0f - sin2_t);
-#ifdef TP_BUG_FRESNEL_SIGN // planted bug of the debugging tests (tests/gpu/debug_workflow_test.cpp)
-    float r_parl = (eta * cos_i + cos_t) / (eta * cos_i + cos_t);
-#else
     float r_parl = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-#endif
     float r_perp = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
     return 0.5f * (r_parl * r_parl + r_perp * r_perp);
 }

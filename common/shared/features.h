@@ -120,13 +120,14 @@ inline BsdfSample bsdf_sample_in(uint features, Material m, vec3 n, vec3 wo, flo
 }
 
 // lights.h's sample_light (every light but the environment map), restricted to a mask.
-inline LightSample sample_light_in(uint features, Light l, vec3 p, vec2 u) {
+inline LightSample sample_light_in(uint features, Light l, vec3 p, vec2 u,
+                                   bool normal_from_vertices) {
     if (feature_on(features, FEATURE_POINT_LIGHTS) && l.type == LIGHT_POINT)
         return sample_point_light(l, p);
     if (feature_on(features, FEATURE_DIRECTIONAL_LIGHTS) && l.type == LIGHT_DIRECTIONAL)
         return sample_directional_light(l);
     if (feature_on(features, FEATURE_EMISSIVE_TRIANGLES) && l.type == LIGHT_TRIANGLE)
-        return sample_triangle_light(l, p, u);
+        return sample_triangle_light(l, p, u, normal_from_vertices);
     if (feature_on(features, FEATURE_ENV_CONSTANT)) return sample_constant_environment(l, u);
     return light_sample_none();
 }

@@ -131,10 +131,9 @@ inline WatertightRay watertight_ray(vec3 dir) {
 }
 
 // Hit in (0, tmax): tuv = (t, weight of v1, weight of v2), the barycentric convention of
-// surface_point() and of Embree; n = (v1 - v0) x (v2 - v0), the plane of the distance. The
-// compute traversal reads n from its BvhTriangle: computing it in the leaf loop, where the
-// two-level traversal keeps its world and object rays live, took that shader from 96 to 128
-// registers on the H200 and cost 3-10 % per spp on instanced scenes (docs/gpu.md, "One-level BVH").
+// surface_point() and of Embree; n = (v1 - v0) x (v2 - v0), the plane of the distance, passed
+// in so that a traversal can read it rather than form it in its leaf loop, where registers are
+// scarce (docs/gpu.md, "One-level BVH").
 inline bool intersect_triangle_normal(vec3 org, WatertightRay r, vec3 v0, vec3 v1, vec3 v2, vec3 n,
                                       float tmax, OUT(vec3) tuv) {
     vec3 a = v0 - org;

@@ -63,33 +63,22 @@ inline vec3 triangle_light_normal(vec3 p0, vec3 p1, vec3 p2) {
     return normalize(cross(p1 - p0, p2 - p0));
 }
 
-// The normal that sampling and shadow rays use: Light::normal, read instead of formed twice per
-// light sample. On the CPU that is -2.0 % of the path loop's instructions (callgrind, cornell
-// 128x128, 2 spp) and 2-4 % of its time (same-run A/B, best of 5, 1 thread: cornell -2.4 %,
-// furnace -1.7 %, cornell_glossy -3.5 %) with bit-identical images; on the H200 compute mode was
-// unchanged or faster. Where the includer defines TP_LIGHT_NORMAL_FROM_VERTICES it is formed from
-// the vertices as before: the pipeline mode's ray-generation shader does (render_pipeline.rgen),
-// because there the 12 more bytes per light read cost 1-2 % per spp on every bundled scene
+// The normal that sampling and shadow rays use: Light::normal as stored, or, with
+// `from_vertices`, formed again from the vertices (the same value): an engine picks whichever
+// is cheaper for it, a read of 12 more bytes per light or a cross product and a normalization
 // (docs/gpu.md, "Stored light normal").
-inline vec3 light_normal(Light l) {
-#ifdef TP_LIGHT_NORMAL_FROM_VERTICES
-    return triangle_light_normal(l.p0, l.p1, l.p2);
-#else
-    return l.normal;
-#endif
+inline vec3 light_normal(Light l, bool from_vertices) {
+    return from_vertices ? triangle_light_normal(l.p0, l.p1, l.p2) : l.normal;
 }
 
 // Area measure to solid angle: p_omega = p_A d^2 / cos(theta_l), with p_A = 1 / area.
 inline float triangle_light_pdf(float area, float dist, float cos_light) {
     if (cos_light <= 0.0f || area <= 0.0f) return 0.0f;
-#ifdef TP_BUG_LIGHT_PDF // planted bug of the debugging tests (tests/gpu/debug_workflow_test.cpp)
-    return 2.0f * dist * dist / (cos_light * area);
-#else
     return dist * dist / (cos_light * area);
-#endif
 }
 
-inline LightSample sample_triangle_light(Light l, vec3 p, vec2 u) {
+// from_vertices: how the light's normal is had (light_normal).
+inline LightSample sample_triangle_light(Light l, vec3 p, vec2 u, bool from_vertices) {
     vec2 b = sample_uniform_triangle(u);
     vec3 q = l.p0 + b.x * (l.p1 - l.p0) + b.y * (l.p2 - l.p0);
     vec3 d = q - p;
@@ -99,7 +88,7 @@ inline LightSample sample_triangle_light(Light l, vec3 p, vec2 u) {
     s.dist = sqrt(dist2);
     s.wi = d / s.dist;
     // Emission leaves the front (counter-clockwise) face only.
-    float cos_light = -dot(light_normal(l), s.wi);
+    float cos_light = -dot(light_normal(l, from_vertices), s.wi);
     s.pdf = triangle_light_pdf(l.area, s.dist, cos_light);
     s.radiance = s.pdf > 0.0f ? l.value : vec3(0.0f);
     s.point = q;
@@ -162,10 +151,10 @@ inline LightSample sample_environment_map(uint pixel, float p_pixel, uint w, uin
 }
 
 // Every light but the environment *map*, whose pixel table the engine reads itself.
-inline LightSample sample_light(Light l, vec3 p, vec2 u) {
+inline LightSample sample_light(Light l, vec3 p, vec2 u, bool normal_from_vertices) {
     if (l.type == LIGHT_POINT) return sample_point_light(l, p);
     if (l.type == LIGHT_DIRECTIONAL) return sample_directional_light(l);
-    if (l.type == LIGHT_TRIANGLE) return sample_triangle_light(l, p, u);
+    if (l.type == LIGHT_TRIANGLE) return sample_triangle_light(l, p, u, normal_from_vertices);
     return sample_constant_environment(l, u);
 }
 

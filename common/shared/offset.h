@@ -6,9 +6,9 @@
 // the scene: scaled by 1e-4, every offset shrinks by 1e-4; moved to 1e5, an offset is a few
 // ulps of 1e5.
 //
-// It replaces Waechter & Binder's rule (Ray Tracing Gems, ch. 6: 256 ulps per coordinate, and
-// 1/65536 absolute within 1/32 of the origin), whose absolute part is 40 % of a sphere's radius
-// in a scene scaled by 1e-4, and whose 256 ulps are 2 units at 1e5 (docs/stress.md).
+// Waechter & Binder's fixed rule (Ray Tracing Gems, ch. 6: 256 ulps per coordinate, and 1/65536
+// absolute within 1/32 of the origin) does not scale so: its absolute part is 40 % of a sphere's
+// radius in a scene scaled by 1e-4, and its 256 ulps are 2 units at 1e5 (docs/stress.md).
 #ifndef TP_SHARED_OFFSET_H
 #define TP_SHARED_OFFSET_H
 
@@ -58,9 +58,6 @@ const float FLOAT_UNIT_ROUNDOFF = 5.9604645e-8f;
 // transform that no longer happens (mix_c >= sum_k |M_ck| |M'_kc| >= 1, as M M' = I). The
 // re-test subtracts the origin from vertices within the triangle's extent, 2 m_c, of the
 // point, and rounds at that size, as in object space.
-//
-// An earlier version counted T in m at 40 u: 0.3 units at 1e5 along every axis (38 ulps), which
-// put the floor's new origins inside the sphere resting on it (docs/stress.md, "Fixed, and what is left").
 const float OFFSET_GAMMA_M = 40.0f * FLOAT_UNIT_ROUNDOFF;
 const float OFFSET_GAMMA_P = 3.0f * FLOAT_UNIT_ROUNDOFF;
 
@@ -77,23 +74,15 @@ inline vec3 point_error_bound(vec3 m, vec3 p) {
     return OFFSET_GAMMA_M * m + vec3(OFFSET_GAMMA_P * max(max(a.x, a.y), a.z));
 }
 
-// The bound's factor for an intersector whose rounding it does not derive: 1 for Embree and the
-// compute mode's watertight test, whose re-test of a triangle the terms above count. The
-// pipeline mode's traversal is the driver's, undocumented; render_pipeline.rgen sets 4. Measured
-// on the H200 at 2048 spp, compute against pipeline mode: with 1, pipeline mode is darker where
-// rays leave surfaces at grazing angles (2-3 % in the corner tiles of cornell_glossy; p = 2e-5
-// cornell, 1e-6 cornell_glossy, 9e-11 spheres: its new rays met their own surface again); with 4
-// and with 16, p = 0.10, 1 and 1 (docs/stress.md).
-#ifndef TP_OFFSET_INTERSECTOR_SLACK
-#define TP_OFFSET_INTERSECTOR_SLACK 1.0f
-#endif
-
 // p: the computed point; p_error: a bound on |p_c - exact_c| for each coordinate c; n: the
 // unit geometric normal on the side the new ray leaves towards. The origin moves along n by
-// dot(|n|, p_error), the largest distance along n that errors within p_error can make (times
-// the intersector's slack).
-inline vec3 offset_ray_origin(vec3 p, vec3 p_error, vec3 n) {
-    float d = TP_OFFSET_INTERSECTOR_SLACK * dot(abs(n), p_error);
+// slack * dot(|n|, p_error): dot(|n|, p_error) is the largest distance along n that errors
+// within p_error can make, and `slack` is the bound's factor for an intersector whose re-test
+// of a triangle the terms above do not derive: 1 for Embree and the compute mode's watertight
+// test, whose rounding they count; the pipeline mode's traversal is the driver's, undocumented,
+// and needs 4 (docs/stress.md, "Pipeline mode's offset slack").
+inline vec3 offset_ray_origin(vec3 p, vec3 p_error, vec3 n, float slack) {
+    float d = slack * dot(abs(n), p_error);
     return p + d * n;
 }
 

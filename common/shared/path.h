@@ -1,7 +1,7 @@
 // The integrator's per-vertex rules, shared so that both engines make the same decisions:
 // multiple importance sampling weights, the geometric validity of scattered and light
-// directions, and how new rays and shadow rays leave the surface. The path loop itself lives
-// in each engine (it calls that engine's ray queries); it follows this order per vertex:
+// directions, and how new rays and shadow rays leave the surface. The path loop
+// (integrator.h) follows this order per vertex:
 //   1. add emission (MIS-weighted against light sampling unless the last bounce was specular)
 //   2. stop at max_depth scattering events
 //   3. next-event estimation: choose a light, sample it, trace a shadow ray
@@ -52,10 +52,11 @@ struct Ray {
 };
 
 // New ray leaving p (coordinate error bound p_error, offset.h) in direction d (unit) from a
-// surface with geometric normal ng.
-inline Ray spawn_ray(vec3 p, vec3 p_error, vec3 ng, vec3 d) {
+// surface with geometric normal ng; slack: the intersector's factor on the bound
+// (offset_ray_origin).
+inline Ray spawn_ray(vec3 p, vec3 p_error, vec3 ng, vec3 d, float slack) {
     Ray r;
-    r.origin = offset_ray_origin(p, p_error, dot(d, ng) > 0.0f ? ng : -ng);
+    r.origin = offset_ray_origin(p, p_error, dot(d, ng) > 0.0f ? ng : -ng, slack);
     r.dir = d;
     r.tmax = FLOAT_MAX;
     r.pad0 = 0u;
@@ -79,14 +80,16 @@ inline Ray camera_ray(Camera cam, RngKey key, uint x, uint y) {
 // point, itself moved off the light's surface by the same error-bound rule when the light is a
 // triangle (its point is a barycentric mix of the world vertices p0..p2, whose magnitudes
 // bound the error as a triangle's do in offset.h), so neither end can hit its own surface.
-inline Ray shadow_ray(vec3 p, vec3 p_error, vec3 ng, LightSample ls, Light l) {
-    Ray r = spawn_ray(p, p_error, ng, ls.wi);
+// slack: as for spawn_ray; normal_from_vertices: how the light's normal is had (light_normal).
+inline Ray shadow_ray(vec3 p, vec3 p_error, vec3 ng, LightSample ls, Light l, float slack,
+                      bool normal_from_vertices) {
+    Ray r = spawn_ray(p, p_error, ng, ls.wi, slack);
     if (ls.dist >= FLOAT_MAX) return r;
     vec3 target = ls.point;
     if (l.type == LIGHT_TRIANGLE)
         target = offset_ray_origin(
             target, point_error_bound(triangle_vertex_magnitude(l.p0, l.p1, l.p2), target),
-            light_normal(l));
+            light_normal(l, normal_from_vertices), slack);
     vec3 d = target - r.origin;
     float len = length(d);
     r.dir = len > 0.0f ? d / len : ls.wi;

@@ -1,6 +1,6 @@
 // Path logs (`render --debug-pixel X,Y --debug-log P.json`, docs/debugging.md): one record per
-// path vertex, filled by both path loops (cpu_ref/integrator.cpp, shaders/integrator.glsl) in
-// the same order from the same values, so that `twinpath pathdiff` can hold a GPU path against
+// path vertex, filled by the path loop of both engines (integrator.h) in the same order from
+// the same values, so that `twinpath pathdiff` can hold a GPU path against
 // the CPU reference field by field. The GPU writes the records into the debug buffer
 // (shaders/debug.glsl); the CPU into a vector. Both go through common/render/path_log.cpp to
 // the same JSON.

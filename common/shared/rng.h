@@ -36,11 +36,7 @@ const uint RNG_ENV_SLOT = 4u;
 const uint RNG_ENV_COIN = 5u;
 const uint RNG_LOBE = 6u;
 const uint RNG_DIR_U = 7u;
-#ifdef TP_BUG_RNG_DIM // planted bug of the debugging tests (tests/gpu/debug_workflow_test.cpp)
-const uint RNG_DIR_V = 7u; // off by one: the direction's v repeats its u
-#else
 const uint RNG_DIR_V = 8u;
-#endif
 const uint RNG_ROULETTE = 9u;
 
 inline uvec4 pcg4d(uvec4 v) {

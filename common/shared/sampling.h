@@ -71,10 +71,9 @@ inline vec2 sample_uniform_triangle(vec2 u) {
 // the high word of the 64-bit product. Slot s then receives exactly the h in
 // [ceil(s 2^32 / n), ceil((s + 1) 2^32 / n)), floor(2^32 / n) or ceil(2^32 / n) of them, so
 // its probability is 1/n to within a relative n 2^-32 (5e-4 for the 2 * 10^6 pixels of a
-// 2000 x 1000 environment map). The former floor(u n) of a 24-bit float u gave each slot
-// 2^24 / n values rounded to an integer, off by up to n 2^-24 relative (8 or 9 values against
-// 8.39 at n = 2 * 10^6: -5 % to +7 %), and that error went straight into the estimate, which
-// divides by the table's pdf.
+// 2000 x 1000 environment map). A 24-bit float u would not do: floor(u n) gives each slot
+// 2^24 / n values rounded to an integer, off by up to n 2^-24 relative, an error that goes
+// straight into the estimate, which divides by the table's pdf.
 // A second, independent number decides between the slot and its alias.
 inline uint alias_slot_from_bits(uint h, uint n) {
     return umul_hi(h, n);

@@ -56,7 +56,7 @@ struct SurfacePoint {
 };
 
 // What the error bound of a hit point needs from its instance (offset.h), a function of the
-// instance alone: the CPU computes it once per instance (cpu_ref/scene_access.h), the shaders
+// instance alone: the CPU computes it once per instance (cpu_ref/cpu_engine.h), the shaders
 // at each hit, where a buffer for it would cost a load as large as the arithmetic.
 struct InstanceErrorTerms {
     vec4 abs_row0; // |M| row by row (0 in w: T is not in the object magnitude)

@@ -1,6 +1,6 @@
 // Chi-square test of discrete selection: the alias tables of scene/alias_table.h sampled with
-// shared/sampling.h's alias_slot_from_bits + alias_resolve (light selection, environment-map pixels)
-// must pick item i with probability w_i / sum(w).
+// shared/sampling.h's alias_slot_from_bits + alias_resolve (light selection, environment-map
+// pixels) must pick item i with probability w_i / sum(w).
 #include "chi2/suite.h"
 
 #include "scene/alias_table.h"

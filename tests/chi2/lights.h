@@ -1,6 +1,6 @@
 // Light fixtures for the light-sampling tests: a triangle light seen from a point, a ray-triangle
 // intersection in double precision for its pdf, and a small environment map with its pixel
-// alias table, sampled and evaluated the way cpu_ref/scene_access.h does.
+// alias table, sampled and evaluated the way shared/scene_access.h does.
 #pragma once
 
 #include "scene/alias_table.h"

@@ -14,7 +14,7 @@ TEST_CASE("triangle light sampling follows its solid-angle pdf", "[chi2]") {
     const SphereChart chart = SphereChart::lobe(to_centroid(l, p), 0.01, 48, 64);
     const DirectionSamples s = draw_directions(
         [&](const glm::vec4& u) -> std::optional<glm::vec3> {
-            const tp::LightSample ls = tp::sample_triangle_light(l, p, tp::vec2(u.x, u.y));
+            const tp::LightSample ls = tp::sample_triangle_light(l, p, tp::vec2(u.x, u.y), false);
             if (ls.pdf <= 0.0f) return std::nullopt;
             return ls.wi;
         },

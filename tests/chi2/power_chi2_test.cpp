@@ -147,7 +147,7 @@ TEST_CASE("power: triangle light pdf without the cosine is rejected", "[chi2][po
     const tp::vec3 p = test_shading_point();
     const DirectionSamples s = draw_directions(
         [&](const glm::vec4& u) -> std::optional<glm::vec3> {
-            const tp::LightSample ls = tp::sample_triangle_light(l, p, tp::vec2(u.x, u.y));
+            const tp::LightSample ls = tp::sample_triangle_light(l, p, tp::vec2(u.x, u.y), false);
             if (ls.pdf <= 0.0f) return std::nullopt;
             return ls.wi;
         },

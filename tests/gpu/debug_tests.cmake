@@ -1,20 +1,32 @@
 # The debugging workflow (docs/debugging.md), included from tests/gpu/CMakeLists.txt.
 #
-# Planted bugs: the debug variant of the compute shader compiled with one deliberate bug each
-# (TP_BUG_* in shaders/trace_bvh.glsl and common/shared/), as .spv files that the renderer loads
-# in place of its own debug module through TWINPATH_DEBUG_SPIRV.
+# Planted bugs: the debug variant of the compute shader compiled from a copy of the sources with
+# one deliberate bug each (plant_bug.cmake replaces the text FROM by TO in FILE), as .spv files
+# that the renderer loads in place of its own debug module through TWINPATH_DEBUG_SPIRV.
 set(BUG_SPIRV_DIR ${CMAKE_CURRENT_BINARY_DIR}/bug_spirv)
 set(BUG_SPIRV)
+set(BUG_FRESNEL_SIGN common/shared/brdf.h
+    "float r_parl = (eta * cos_i - cos_t)" "float r_parl = (eta * cos_i + cos_t)")
+set(BUG_SWAP_BARY shaders/trace_bvh.glsl
+    "hit.bary = vec2(tuv.y, tuv.z)" "hit.bary = vec2(tuv.z, tuv.y)")
+set(BUG_LIGHT_PDF common/shared/lights.h
+    "return dist * dist / (cos_light * area)" "return 2.0f * dist * dist / (cos_light * area)")
+set(BUG_RNG_DIM common/shared/rng.h "const uint RNG_DIR_V = 8u" "const uint RNG_DIR_V = 7u")
+file(GLOB_RECURSE BUG_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/shaders/*
+     ${PROJECT_SOURCE_DIR}/common/shared/*)
 foreach(bug FRESNEL_SIGN SWAP_BARY LIGHT_PDF RNG_DIM)
+  list(GET BUG_${bug} 0 file)
+  list(GET BUG_${bug} 1 from)
+  list(GET BUG_${bug} 2 to)
+  set(copy ${BUG_SPIRV_DIR}/${bug}_src)
   add_custom_command(
     OUTPUT ${BUG_SPIRV_DIR}/${bug}.spv
-    COMMAND ${CMAKE_COMMAND} -E make_directory ${BUG_SPIRV_DIR}
-    COMMAND ${GLSLANG_VALIDATOR} --quiet --target-env vulkan1.2 -I${PROJECT_SOURCE_DIR}/shaders
-            -I${PROJECT_SOURCE_DIR}/common -DTP_DEBUG_SHADER -DTP_BUG_${bug}
-            --depfile ${BUG_SPIRV_DIR}/${bug}.spv.d -o ${BUG_SPIRV_DIR}/${bug}.spv
-            ${PROJECT_SOURCE_DIR}/shaders/render_compute.comp
-    DEPENDS ${PROJECT_SOURCE_DIR}/shaders/render_compute.comp
-    DEPFILE ${BUG_SPIRV_DIR}/${bug}.spv.d
+    COMMAND ${CMAKE_COMMAND} -DROOT=${PROJECT_SOURCE_DIR} -DCOPY_DIR=${copy} -DFILE=${file}
+            -DFROM=${from} -DTO=${to} -P ${CMAKE_CURRENT_SOURCE_DIR}/plant_bug.cmake
+    COMMAND ${GLSLANG_VALIDATOR} --quiet --target-env vulkan1.2 -I${copy}/shaders
+            -I${copy}/common -DTP_DEBUG_SHADER -o ${BUG_SPIRV_DIR}/${bug}.spv
+            ${copy}/shaders/render_compute.comp
+    DEPENDS ${BUG_SOURCES} ${CMAKE_CURRENT_SOURCE_DIR}/plant_bug.cmake
     COMMENT "Compiling render_compute.comp with the planted bug ${bug}"
     VERBATIM)
   list(APPEND BUG_SPIRV ${BUG_SPIRV_DIR}/${bug}.spv)

@@ -58,6 +58,11 @@ void set3(FnIn& x, int i, vec3 v, float w = 0.0f) {
     x.f[i] = vec4(v, w);
 }
 
+// An intersector's factor on the ray-offset bound (shared/offset.h): the engines' 1 and 4.
+float slack(InputGen& g) {
+    return g.chance(0.5f) ? 1.0f : 4.0f;
+}
+
 void light(InputGen& g, FnIn& x, uint32_t type) {
     x.u.y = type;
     if (type == LIGHT_DIRECTIONAL) {
@@ -235,7 +240,8 @@ void make_input(uint32_t id, InputGen& g, FnIn& x) {
     case FN_SAMPLE_TRIANGLE_LIGHT:
         light(g, x, LIGHT_TRIANGLE);
         set3(x, 0, g.box(10.0f));
-        x.f[1] = vec4(g.uni(), g.uni(), 0.0f, 0.0f);
+        // z: the normal from the vertices (1) or as stored (0).
+        x.f[1] = vec4(g.uni(), g.uni(), float(g.below(2)), 0.0f);
         break;
     case FN_SAMPLE_CONSTANT_ENVIRONMENT:
         light(g, x, LIGHT_ENVIRONMENT);
@@ -266,7 +272,7 @@ void make_input(uint32_t id, InputGen& g, FnIn& x) {
         const uint32_t type = g.below(4);
         light(g, x, type);
         set3(x, 0, g.box(10.0f));
-        x.f[1] = vec4(g.uni(), g.uni(), 0.0f, 0.0f);
+        x.f[1] = vec4(g.uni(), g.uni(), float(g.below(2)), 0.0f);
         break;
     }
     case FN_UV_TO_IMAGE:
@@ -352,7 +358,7 @@ void make_input(uint32_t id, InputGen& g, FnIn& x) {
     }
     case FN_SPAWN_RAY: {
         const vec3 p = g.box(g.log_uniform(1e-4f, 1e5f));
-        set3(x, 0, p);
+        set3(x, 0, p, slack(g));
         set3(x, 1, n);
         set3(x, 2, g.unit());
         set3(x, 3, point_error_bound(glm::abs(p) + g.box(1.0f), p));
@@ -360,7 +366,7 @@ void make_input(uint32_t id, InputGen& g, FnIn& x) {
     }
     case FN_OFFSET_RAY_ORIGIN: {
         const vec3 p = g.box(g.log_uniform(1e-4f, 1e5f));
-        set3(x, 0, p);
+        set3(x, 0, p, slack(g));
         set3(x, 1, point_error_bound(glm::abs(p) + g.box(1.0f), p));
         set3(x, 2, n);
         break;
@@ -381,8 +387,8 @@ void make_input(uint32_t id, InputGen& g, FnIn& x) {
         const vec3 p = g.box(10.0f), wi = g.unit();
         set3(x, 5, point_error_bound(glm::abs(p), p));
         const float dist = g.chance(0.3f) ? FLOAT_MAX : g.log_uniform(0.1f, 100.0f);
-        set3(x, 0, p);
-        set3(x, 1, n);
+        set3(x, 0, p, slack(g));
+        set3(x, 1, n, float(g.below(2))); // w: the light's normal from its vertices
         set3(x, 2, wi, dist);
         set3(x, 3, g.color(10.0f), g.uni());
         set3(x, 4, dist >= FLOAT_MAX ? vec3(0.0f) : p + dist * wi);

@@ -143,9 +143,9 @@ TEST_CASE("the restricted dispatch equals the full one wherever its mask admits 
                              : type == LIGHT_DIRECTIONAL ? FEATURE_DIRECTIONAL_LIGHTS
                              : type == LIGHT_TRIANGLE    ? FEATURE_EMISSIVE_TRIANGLES
                                                          : FEATURE_ENV_CONSTANT;
-        const LightSample full = sample_light(l, p, u);
+        const LightSample full = sample_light(l, p, u, false);
         for (uint32_t mask : {FEATURES_ALL, own}) {
-            const LightSample s = sample_light_in(mask, l, p, u);
+            const LightSample s = sample_light_in(mask, l, p, u, false);
             CHECK(s.wi == full.wi);
             CHECK(s.pdf == full.pdf);
             CHECK(s.radiance == full.radiance);

@@ -60,7 +60,7 @@ TEST_CASE("the offset origin lies strictly on the normal's side", "[offset]") {
         for (int i = 0; i < 2000; ++i) {
             const tp::vec3 p = scale * tp::vec3(unit(g), unit(g), unit(g));
             const tp::vec3 n = random_unit(g);
-            const tp::vec3 q = tp::offset_ray_origin(p, tp::point_error_bound(abs(p), p), n);
+            const tp::vec3 q = tp::offset_ray_origin(p, tp::point_error_bound(abs(p), p), n, 1.0f);
             const glm::dvec3 d = glm::dvec3(q) - glm::dvec3(p);
             CAPTURE(p.x, p.y, p.z, n.x, n.y, n.z);
             REQUIRE(glm::dot(d, glm::dvec3(n)) > 0.0);
@@ -104,7 +104,7 @@ TEST_CASE("spawned rays clear their triangle at every scale and distance", "[off
                 for (int j = 0; j < 8; ++j) {
                     tp::vec3 d = random_unit(g);
                     if (j < 2) d = glm::normalize(d - glm::dot(d, sp.ng) * sp.ng + 1e-3f * sp.ng);
-                    const tp::Ray r = tp::spawn_ray(sp.p, sp.p_error, sp.ng, d);
+                    const tp::Ray r = tp::spawn_ray(sp.p, sp.p_error, sp.ng, d, 1.0f);
                     const double side = glm::dot(glm::dvec3(r.origin) - wa, nd);
                     CAPTURE(s, distance, i, j);
                     REQUIRE(side * glm::dot(glm::dvec3(d), nd) > 0.0);
@@ -127,7 +127,7 @@ TEST_CASE("the offset scales with the scene", "[offset]") {
     for (float s : {1.0f, 1e-4f}) {
         const tp::Instance t = make_instance(glm::scale(glm::mat4(1.0f), glm::vec3(s)));
         const tp::SurfacePoint sp = tp::surface_point(t, a, b, c, tp::vec2(0.3f, 0.4f));
-        const tp::Ray r = tp::spawn_ray(sp.p, sp.p_error, sp.ng, d);
+        const tp::Ray r = tp::spawn_ray(sp.p, sp.p_error, sp.ng, d, 1.0f);
         len[k++] = glm::length(glm::dvec3(r.origin) - glm::dvec3(sp.p));
     }
     CHECK(len[0] > 0.0);
@@ -205,7 +205,8 @@ TEST_CASE("floor rays next to a resting sphere start outside it at 1e5 along eve
             else
                 continue; // behind the sphere's silhouette does not matter here: no floor hit
             tp::surface_snap_to_ray(sp, eye, d);
-            const tp::Ray r = tp::spawn_ray(sp.p, sp.p_error, sp.ng, tp::vec3(0.0f, 1.0f, 0.0f));
+            const tp::Ray r =
+                tp::spawn_ray(sp.p, sp.p_error, sp.ng, tp::vec3(0.0f, 1.0f, 0.0f), 1.0f);
             const double height = double(r.origin.y) - 1e5;
             CAPTURE(i, rho, height);
             REQUIRE(height > 0.0); // above the floor

@@ -388,7 +388,7 @@ inline FnOut run_function(uint id, FnIn x) {
         o.f[0].x = triangle_light_pdf(a.x, a.y, a.z);
         break;
     case FN_SAMPLE_TRIANGLE_LIGHT:
-        fn_put_light(o, sample_triangle_light(fn_light(x), a, vec2(b.x, b.y)));
+        fn_put_light(o, sample_triangle_light(fn_light(x), a, vec2(b.x, b.y), b.z != 0.0f));
         break;
     case FN_SAMPLE_CONSTANT_ENVIRONMENT:
         fn_put_light(o, sample_constant_environment(fn_light(x), vec2(b.x, b.y)));
@@ -413,7 +413,7 @@ inline FnOut run_function(uint id, FnIn x) {
         fn_put_light(o, sample_environment_map(x.u.z, a.x, x.u.x, x.u.y, a.y, vec2(b.x, b.y)));
         break;
     case FN_SAMPLE_LIGHT:
-        fn_put_light(o, sample_light(fn_light(x), a, vec2(b.x, b.y)));
+        fn_put_light(o, sample_light(fn_light(x), a, vec2(b.x, b.y), b.z != 0.0f));
         break;
     case FN_UV_TO_IMAGE: {
         vec2 st = uv_to_image(vec2(a.x, a.y));
@@ -500,7 +500,7 @@ inline FnOut run_function(uint id, FnIn x) {
         o.u.x = fn_bool(scatter_is_consistent(a, b, c, x.u.x));
         break;
     case FN_SPAWN_RAY:
-        fn_put_ray(o, spawn_ray(a, d, b, c));
+        fn_put_ray(o, spawn_ray(a, d, b, c, x.f[0].w));
         break;
     case FN_SHADOW_RAY: {
         LightSample ls;
@@ -510,7 +510,7 @@ inline FnOut run_function(uint id, FnIn x) {
         ls.pdf = x.f[3].w;
         ls.point = e;
         ls.delta = x.u.x != 0u;
-        fn_put_ray(o, shadow_ray(a, fn3(x, 5u), b, ls, fn_light(x)));
+        fn_put_ray(o, shadow_ray(a, fn3(x, 5u), b, ls, fn_light(x), x.f[0].w, x.f[1].w != 0.0f));
         break;
     }
     case FN_CAMERA_MAKE: {
@@ -537,7 +537,7 @@ inline FnOut run_function(uint id, FnIn x) {
         break;
     }
     case FN_OFFSET_RAY_ORIGIN:
-        fn_put3(o, 0u, offset_ray_origin(a, b, c));
+        fn_put3(o, 0u, offset_ray_origin(a, b, c, x.f[0].w));
         break;
     case FN_ROULETTE_SURVIVAL:
         o.f[0].x = roulette_survival(a, x.u.x, x.u.y);

@@ -67,7 +67,7 @@ void main() {
         l.primitive = 0u;
         l.normal = triangle_light_normal(l.p0, l.p1, l.p2);
         l.pad0 = 0u;
-        LightSample ls = sample_triangle_light(l, f3(3u), u.xy);
+        LightSample ls = sample_triangle_light(l, f3(3u), u.xy, false);
         if (ls.pdf > 0.0f) r = vec4(ls.wi, 1.0f);
         break;
     }
