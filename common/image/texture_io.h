@@ -3,7 +3,7 @@
 // and decoded to linear; float images are taken as linear.
 #pragma once
 
-#include "scene/scene.h"
+#include "image/texture.h"
 
 #include <string>
 

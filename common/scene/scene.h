@@ -9,6 +9,7 @@
 // Directions, colours and the rest are float: they do not depend on where the scene sits.
 #pragma once
 
+#include "image/texture.h"
 #include "shared/types.h"
 
 #include <cstdint>
@@ -18,13 +19,6 @@
 #include <vector>
 
 namespace tp {
-
-struct Texture {
-    std::string name;
-    uint32_t width = 0;
-    uint32_t height = 0;
-    std::vector<vec3> texels; // linear RGB, rows top to bottom
-};
 
 struct Mesh {
     std::string name;

@@ -80,7 +80,7 @@ inline vec3 point_error_bound(vec3 m, vec3 p) {
 // within p_error can make, and `slack` is the bound's factor for an intersector whose re-test
 // of a triangle the terms above do not derive: 1 for Embree and the compute mode's watertight
 // test, whose rounding they count; the pipeline mode's traversal is the driver's, undocumented,
-// and needs 4 (docs/stress.md, "Pipeline mode's offset slack").
+// and needs 4 (docs/stress.md).
 inline vec3 offset_ray_origin(vec3 p, vec3 p_error, vec3 n, float slack) {
     float d = slack * dot(abs(n), p_error);
     return p + d * n;
