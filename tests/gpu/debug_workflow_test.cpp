@@ -119,7 +119,7 @@ TEST_CASE("spheres has mirror glass and silhouette pixels to log", "[gpu]") {
 namespace {
 
 struct PlantedBug {
-    const char* define;           // TP_BUG_<define>
+    const char* define;           // the bug's name in tests/gpu/debug_tests.cmake
     const char* scene;            // where it shows
     uint32_t x, y;                // the logged pixel (a 32 x 32 render)
     size_t vertex;                // where pathdiff must find it first
