@@ -2,6 +2,7 @@
 #include "arg_parse.h"
 #include "commands.h"
 #include "output_paths.h"
+#include "scene_args.h"
 #include "util/progress_bar.h"
 
 #include "compare/colormap.h"
@@ -9,7 +10,6 @@
 #include "image/png_io.h"
 #include "render/render_header.h"
 #include "scene/flatten.h"
-#include "scene/load.h"
 #include "util/error.h"
 #include "util/interrupt.h"
 #include "vulkan_rt/vulkan_renderer.h"
@@ -24,19 +24,12 @@
 namespace tp {
 namespace {
 
-struct RenderArgs {
-    std::string scene;
+struct RenderArgs : SceneArgs {
     std::optional<std::string> output; // each output: given (perhaps as "") or not
     std::string backend = "cpu";
-    std::string vk_mode = "auto";
     std::optional<std::string> bvh; // --bvh binary|wide (compute mode's BVH layout)
-    std::optional<uint32_t> spp, width, height, min_depth, max_depth;
     double time_limit = 0;
-    uint32_t seed = 0, sample_offset = 0;
-    uint32_t threads = 0;
-    std::string device;
-    std::string eye, target, up;
-    std::optional<float> fov;
+    uint32_t sample_offset = 0;
     std::optional<std::string> stats, png;
     std::optional<std::string> pipeline_stats; // --pipeline-stats FILE (docs/gpu.md)
     std::string features = "scene";            // --features: scene (specialized) or all
@@ -80,22 +73,9 @@ std::vector<uint8_t> heat_map(const std::vector<float>& cost) {
 }
 
 int run_render(const RenderArgs& a) {
-    std::vector<std::string> warnings;
-    Scene scene = load_scene(a.scene, warnings);
-    for (const std::string& w : warnings) fmt::print(stderr, "twinpath: warning: {}\n", w);
-
-    SceneOverrides o;
-    o.spp = a.spp;
-    if (a.time_limit > 0 && !a.spp) o.spp = 1u << 30; // until the time runs out
-    o.width = a.width;
-    o.height = a.height;
-    o.min_depth = a.min_depth;
-    o.max_depth = a.max_depth;
-    if (!a.eye.empty()) o.eye = parse_xyz("--eye", a.eye);
-    if (!a.target.empty()) o.target = parse_xyz("--target", a.target);
-    if (!a.up.empty()) o.up = vec3(parse_xyz("--up", a.up));
-    o.fov = a.fov;
-    apply_overrides(scene, o);
+    // With --time-limit and no --spp: until the time runs out.
+    const Scene scene =
+        load_scene_args(a, a.time_limit > 0 ? std::optional<uint32_t>(1u << 30) : std::nullopt);
     const FlatScene flat = flatten(scene);
 
     DebugRequest debug;
@@ -214,34 +194,16 @@ Subcommand add_render_command(CLI::App& app) {
     auto a = std::make_shared<RenderArgs>();
     CLI::App* c = app.add_subcommand(
         "render", "Render a scene (.json, .obj or a bundled scene name) to OpenEXR");
-    c->add_option("scene", a->scene, "Scene file or bundled scene name")->required();
+    add_scene_options(c, *a);
     c->add_option("-o,--output", a->output, "Output OpenEXR file (default: <scene>.exr)");
     c->add_option("--backend", a->backend, "cpu or vulkan")
         ->check(CLI::IsMember({"cpu", "vulkan"}));
-    c->add_option("--vk-mode", a->vk_mode, "Vulkan mode")
-        ->check(CLI::IsMember({"auto", "compute", "pipeline"}));
     c->add_option("--bvh", a->bvh, "Compute mode's BVH layout")
         ->check(CLI::IsMember({"binary", "wide"}));
-    c->add_option("--spp", a->spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 30));
     c->add_option("--time-limit", a->time_limit, "Stop after this many seconds (whole passes)")
         ->check(number_in(0.0, 1e9));
-    c->add_option("--seed", a->seed, "Random seed");
     c->add_option("--sample-offset", a->sample_offset,
                   "First sample index: render samples K..K+spp-1 (docs/farm.md)");
-    c->add_option("--width", a->width, "Image width")->check(CLI::Range(1u, 16384u));
-    c->add_option("--height", a->height, "Image height")->check(CLI::Range(1u, 16384u));
-    c->add_option("--min-depth", a->min_depth, "Bounces before Russian roulette")
-        ->check(CLI::Range(0u, 100000u));
-    c->add_option("--max-depth", a->max_depth, "Maximum scattering events")
-        ->check(CLI::Range(1u, 100000u));
-    c->add_option("--threads", a->threads, "CPU threads (0: all)")->check(CLI::Range(0u, 4096u));
-    c->add_option("--device", a->device,
-                  "Vulkan device index or name substring; all, or a list: several at once");
-    c->add_option("--eye", a->eye, "Camera position X,Y,Z");
-    c->add_option("--target", a->target, "Camera target X,Y,Z");
-    c->add_option("--up", a->up, "Camera up vector X,Y,Z");
-    c->add_option("--fov", a->fov, "Vertical field of view in degrees")
-        ->check(number_in(1e-3, 179.0));
     c->add_option("--stats", a->stats, "Write render statistics as JSON");
     c->add_option("--png", a->png, "Write a tone-mapped sRGB PNG preview");
     c->add_option("--pipeline-stats", a->pipeline_stats,

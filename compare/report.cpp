@@ -3,6 +3,7 @@
 #include "compare/colormap.h"
 #include "compare/display.h"
 #include "compare/distributions.h"
+#include "compare/significance_map.h"
 #include "image/png_io.h"
 #include "util/error.h"
 #include "util/markup_escape.h"
@@ -18,14 +19,6 @@ namespace tp {
 namespace {
 
 const char* const kChannel[3] = {"R", "G", "B"};
-
-// Per pixel, the channel value of largest magnitude, sign kept.
-double signed_max(double r, double g, double b) {
-    double v = r;
-    if (std::fabs(g) > std::fabs(v)) v = g;
-    if (std::fabs(b) > std::fabs(v)) v = b;
-    return v;
-}
 
 double percentile_abs(std::vector<double> v, double q) {
     for (double& x : v) x = std::fabs(x);
@@ -118,16 +111,8 @@ void write_report(const std::string& dir, const CompareResult& r, const RgbImage
     for (size_t i = 0; i < n; ++i) put(rgb, i, diverging_color(mean_d[i] / d_scale));
     write_png(base + "difference.png", w, h, rgb);
 
-    // Full colour at the |z| where the first Holm step would reject a pixel-channel.
-    const size_t m = 3 * n;
-    const double z_full = normal_upper_quantile(r.local_level / (2.0 * double(m)));
-    for (size_t i = 0; i < n; ++i) {
-        const bool sig =
-            r.local.significant(0, i) || r.local.significant(1, i) || r.local.significant(2, i);
-        const double z = signed_max(r.local.z[0][i], r.local.z[1][i], r.local.z[2][i]);
-        put(rgb, i, sig ? std::array<uint8_t, 3>{255, 230, 0} : diverging_color(z / z_full));
-    }
-    write_png(base + "z.png", w, h, rgb);
+    write_png(base + "z.png", w, h, significance_map(r));
+    const double z_full = significance_full_z(r);
 
     // Tile z at full colour where a single tile would be significant by Bonferroni over the
     // 3 K tile-channels, the same rule as for pixels (the chi-square has no per-tile threshold).

@@ -102,24 +102,32 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 } // namespace
 
-RenderResult render_compute(const VulkanContext& ctx, const FlatScene& scene,
-                            const RenderOptions& options, BvhLayout layout) {
+ModeSetup prepare_compute(const VulkanContext& ctx, const FlatScene& scene,
+                          const RenderOptions& options, BvhLayout layout) {
     // The BVH's shape follows the mask the shader is specialized to: one level without
     // instancing, two with it (bvh_builder.h, trace_bvh.glsl).
     const uint32_t features = render_feature_mask(scene, options.all_features);
     const auto t_build = std::chrono::steady_clock::now();
     const BvhBuild bvh = build_bvh(scene, features, layout);
-    AccelStats accel;
-    accel.build_time_s = seconds_since(t_build);
-    accel.bytes = bvh.bytes();
-    accel.extra["bvh_levels"] = bvh.one_level ? "1" : "2";
-    accel.extra["bvh_layout"] = bvh_layout_name(layout);
-    const SceneBuffers sb =
+    ModeSetup m;
+    m.accel.build_time_s = seconds_since(t_build);
+    m.accel.bytes = bvh.bytes();
+    m.accel.extra["bvh_levels"] = bvh.one_level ? "1" : "2";
+    m.accel.extra["bvh_layout"] = bvh_layout_name(layout);
+    m.buffers =
         upload_scene(ctx, scene, seeded_params(scene, options.seed), bvh.mesh_roots, 0, features);
-    ComputeTracer tracer(ctx, bvh, options.debug.active() || debug_spirv_overridden(), features);
-    add_cache_stats(tracer.cache_use(), accel.extra);
-    accel.pipeline = tracer.report();
-    return render_batches(ctx, scene, options, sb, tracer, accel);
+    auto tracer = std::make_unique<ComputeTracer>(
+        ctx, bvh, options.debug.active() || debug_spirv_overridden(), features);
+    add_cache_stats(tracer->cache_use(), m.accel.extra);
+    m.accel.pipeline = tracer->report();
+    m.tracer = std::move(tracer);
+    return m;
+}
+
+RenderResult render_compute(const VulkanContext& ctx, const FlatScene& scene,
+                            const RenderOptions& options, BvhLayout layout) {
+    ModeSetup m = prepare_compute(ctx, scene, options, layout);
+    return render_batches(ctx, scene, options, m);
 }
 
 } // namespace tp

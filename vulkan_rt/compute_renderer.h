@@ -7,8 +7,13 @@
 #include "scene/flatten.h"
 #include "vulkan_rt/bvh_builder.h"
 #include "vulkan_rt/context.h"
+#include "vulkan_rt/render_loop.h"
 
 namespace tp {
+
+// The BVH, the scene buffers and the compute tracer, ready for batches.
+ModeSetup prepare_compute(const VulkanContext& ctx, const FlatScene& scene,
+                          const RenderOptions& options, BvhLayout layout);
 
 RenderResult render_compute(const VulkanContext& ctx, const FlatScene& scene,
                             const RenderOptions& options, BvhLayout layout);

@@ -57,7 +57,7 @@ bool instance_extension_available(const char* name) {
 
 } // namespace
 
-VulkanInstance::VulkanInstance() {
+VulkanInstance::VulkanInstance(const std::vector<std::string>& extra_extensions) {
     const ValidationRequest request = validation_request();
     if (request != ValidationRequest::Off) {
         validation_ = layer_available(kValidationLayer);
@@ -79,6 +79,7 @@ VulkanInstance::VulkanInstance() {
         extensions.push_back(VK_KHR_PORTABILITY_ENUMERATION_EXTENSION_NAME);
         flags |= VK_INSTANCE_CREATE_ENUMERATE_PORTABILITY_BIT_KHR;
     }
+    for (const std::string& e : extra_extensions) extensions.push_back(e.c_str());
     VkDebugUtilsMessengerCreateInfoEXT messenger_ci{};
     if (validation_) {
         extensions.push_back(VK_EXT_DEBUG_UTILS_EXTENSION_NAME);
@@ -127,8 +128,10 @@ std::vector<DeviceInfo> VulkanInstance::devices() const {
 }
 
 VulkanContext::VulkanContext(const std::string& selector, const std::string& vk_mode,
-                             bool pipeline_statistics)
-    : instance_(std::make_unique<VulkanInstance>()), statistics_requested_(pipeline_statistics) {
+                             bool pipeline_statistics, const PresentationRequest* presentation)
+    : instance_(std::make_unique<VulkanInstance>(presentation ? presentation->instance_extensions
+                                                              : std::vector<std::string>{})),
+      statistics_requested_(pipeline_statistics) {
     const std::vector<DeviceInfo> devices = instance_->devices();
     info_ = select_device(devices, selector);
     mode_ = resolve_vk_mode(vk_mode, info_);
@@ -144,10 +147,17 @@ VulkanContext::VulkanContext(const std::string& selector, const std::string& vk_
     vkGetPhysicalDeviceQueueFamilyProperties(physical_, &nq, nullptr);
     std::vector<VkQueueFamilyProperties> queues(nq);
     vkGetPhysicalDeviceQueueFamilyProperties(physical_, &nq, queues.data());
-    // Prefer a compute family that can also write timestamps.
+    // Prefer a compute family that can also write timestamps; for a window, one that can also
+    // draw (the overlay) and present to its surface.
+    if (presentation) surface_ = presentation->create_surface(instance_->handle());
     bool found = false;
     for (uint32_t i = 0; i < nq; ++i) {
         if (!(queues[i].queueFlags & VK_QUEUE_COMPUTE_BIT)) continue;
+        if (surface_) {
+            VkBool32 present = VK_FALSE;
+            vkGetPhysicalDeviceSurfaceSupportKHR(physical_, i, surface_, &present);
+            if (!present || !(queues[i].queueFlags & VK_QUEUE_GRAPHICS_BIT)) continue;
+        }
         if (!found || (timestamp_bits_ == 0 && queues[i].timestampValidBits > 0)) {
             queue_family_ = i;
             timestamp_bits_ = queues[i].timestampValidBits;
@@ -155,6 +165,12 @@ VulkanContext::VulkanContext(const std::string& selector, const std::string& vk_
         }
     }
 
+    if (!found) {
+        release();
+        runtime_error("Vulkan device {} has no queue that can compute, draw and present to the "
+                      "window",
+                      info_.name);
+    }
     const float priority = 1.0f;
     VkDeviceQueueCreateInfo qci{};
     qci.sType = VK_STRUCTURE_TYPE_DEVICE_QUEUE_CREATE_INFO;
@@ -191,6 +207,7 @@ VulkanContext::VulkanContext(const std::string& selector, const std::string& vk_
     if (creation_feedback_) extensions.push_back(VK_EXT_PIPELINE_CREATION_FEEDBACK_EXTENSION_NAME);
     if (pipeline_statistics_)
         extensions.push_back(VK_KHR_PIPELINE_EXECUTABLE_PROPERTIES_EXTENSION_NAME);
+    if (surface_) extensions.push_back(VK_KHR_SWAPCHAIN_EXTENSION_NAME);
     VkDeviceCreateInfo dci{};
     dci.sType = VK_STRUCTURE_TYPE_DEVICE_CREATE_INFO;
     dci.pNext = &features;
@@ -220,12 +237,15 @@ VulkanContext::~VulkanContext() {
 }
 
 void VulkanContext::release() {
-    if (!device_) return;
-    vkDeviceWaitIdle(device_); // best effort: a lost device cannot be waited for
-    if (fence_) vkDestroyFence(device_, fence_, nullptr);
-    if (pool_) vkDestroyCommandPool(device_, pool_, nullptr);
-    vkDestroyDevice(device_, nullptr);
-    device_ = VK_NULL_HANDLE;
+    if (device_) {
+        vkDeviceWaitIdle(device_); // best effort: a lost device cannot be waited for
+        if (fence_) vkDestroyFence(device_, fence_, nullptr);
+        if (pool_) vkDestroyCommandPool(device_, pool_, nullptr);
+        vkDestroyDevice(device_, nullptr);
+        device_ = VK_NULL_HANDLE;
+    }
+    if (surface_) vkDestroySurfaceKHR(instance_->handle(), surface_, nullptr);
+    surface_ = VK_NULL_HANDLE;
 }
 
 uint32_t VulkanContext::memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,

@@ -11,15 +11,25 @@
 
 #include <functional>
 #include <memory>
+#include <string>
 #include <vector>
 
 namespace tp {
+
+// What a window needs from the context (vulkan_rt/presenter.h): the instance extensions of its
+// window system (GLFW's glfwGetRequiredInstanceExtensions) and the function that creates its
+// surface on the instance. The context then opens a queue that can also draw and present there,
+// with VK_KHR_swapchain, and owns the surface.
+struct PresentationRequest {
+    std::vector<std::string> instance_extensions;
+    std::function<VkSurfaceKHR(VkInstance)> create_surface;
+};
 
 class VulkanInstance {
   public:
     // Throws RuntimeError when there is no Vulkan loader/driver, or when validation is
     // required (TWINPATH_VALIDATION=1) and the Khronos layer is not installed.
-    VulkanInstance();
+    explicit VulkanInstance(const std::vector<std::string>& extra_extensions = {});
     ~VulkanInstance();
     VulkanInstance(const VulkanInstance&) = delete;
     VulkanInstance& operator=(const VulkanInstance&) = delete;
@@ -43,8 +53,10 @@ class VulkanContext {
     // Opens the device that `selector` names (device_info.h, select_device) for the mode that
     // `vk_mode` (--vk-mode) resolves to there (resolve_vk_mode). `pipeline_statistics`
     // (--pipeline-stats): enable VK_KHR_pipeline_executable_properties where the device has it.
+    // `presentation`: also open the device for a window's swapchain (PresentationRequest).
     explicit VulkanContext(const std::string& selector, const std::string& vk_mode = "compute",
-                           bool pipeline_statistics = false);
+                           bool pipeline_statistics = false,
+                           const PresentationRequest* presentation = nullptr);
     ~VulkanContext();
     VulkanContext(const VulkanContext&) = delete;
     VulkanContext& operator=(const VulkanContext&) = delete;
@@ -55,6 +67,8 @@ class VulkanContext {
     VkPhysicalDevice physical() const { return physical_; }
     VkDevice device() const { return device_; }
     VkQueue queue() const { return queue_; }
+    uint32_t queue_family() const { return queue_family_; }
+    VkSurfaceKHR surface() const { return surface_; } // VK_NULL_HANDLE without a window
     const VkPhysicalDeviceLimits& limits() const { return limits_; }
     uint32_t timestamp_valid_bits() const { return timestamp_bits_; }
     // VK_EXT_pipeline_creation_feedback is enabled (pipeline_report.h).
@@ -87,6 +101,7 @@ class VulkanContext {
     bool statistics_requested_ = false;
     bool pipeline_statistics_ = false;
     VkQueue queue_ = VK_NULL_HANDLE;
+    VkSurfaceKHR surface_ = VK_NULL_HANDLE;
     VkCommandPool pool_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
 };

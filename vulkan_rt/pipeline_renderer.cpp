@@ -18,13 +18,17 @@
 namespace tp {
 namespace {
 
-// The ray-tracing pipeline over the TLAS it binds to slot 13.
+// The ray-tracing pipeline over the TLAS it binds to slot 13; it keeps the acceleration
+// structures and the extension's functions alive.
 class PipelineTracer : public Tracer {
   public:
     // `debug`: also build the pipeline with the debug ray-generation shader.
-    PipelineTracer(const VulkanContext& ctx, const RtFunctions& rt, const AccelStructures& as,
-                   bool debug, uint32_t features)
-        : program_(ctx, rt, sizeof(BatchParams), nullptr, 0, features, as.exact_count() > 0) {
+    PipelineTracer(const VulkanContext& ctx, std::unique_ptr<RtFunctions> rt_functions,
+                   std::unique_ptr<AccelStructures> accel, bool debug, uint32_t features)
+        : rt_(std::move(rt_functions)), as_(std::move(accel)),
+          program_(ctx, *rt_, sizeof(BatchParams), nullptr, 0, features, as_->exact_count() > 0) {
+        const RtFunctions& rt = *rt_;
+        const AccelStructures& as = *as_;
         program_.bind_tlas(as.tlas());
         if (debug) {
             debug_spirv_ =
@@ -56,6 +60,8 @@ class PipelineTracer : public Tracer {
     }
 
   private:
+    std::unique_ptr<RtFunctions> rt_;
+    std::unique_ptr<AccelStructures> as_;
     RtProgram program_;
     std::vector<uint32_t> debug_spirv_;
     std::unique_ptr<RtProgram> debug_program_;
@@ -63,30 +69,37 @@ class PipelineTracer : public Tracer {
 
 } // namespace
 
-RenderResult render_pipeline(const VulkanContext& ctx, const FlatScene& scene,
-                             const RenderOptions& options) {
+ModeSetup prepare_pipeline(const VulkanContext& ctx, const FlatScene& scene,
+                           const RenderOptions& options) {
     if (options.debug.integrator == INTEGRATOR_COST)
         input_error("--integrator cost counts BVH nodes and triangles of the software traversal: "
                     "use --vk-mode compute (the hardware traversal of pipeline mode exposes no "
                     "counts; docs/debugging.md)");
-    const RtFunctions rt(ctx.device());
-    const SceneBuffers sb =
-        upload_scene(ctx, scene, seeded_params(scene, options.seed), {}, kAccelInputUsage,
-                     render_feature_mask(scene, options.all_features));
+    auto rt = std::make_unique<RtFunctions>(ctx.device());
+    ModeSetup m;
+    m.buffers = upload_scene(ctx, scene, seeded_params(scene, options.seed), {}, kAccelInputUsage,
+                             render_feature_mask(scene, options.all_features));
     const auto t_build = std::chrono::steady_clock::now();
-    const AccelStructures as(ctx, rt, scene, sb);
-    AccelStats accel;
-    accel.build_time_s =
+    auto as = std::make_unique<AccelStructures>(ctx, *rt, scene, m.buffers);
+    m.accel.build_time_s =
         std::chrono::duration<double>(std::chrono::steady_clock::now() - t_build).count();
-    accel.bytes = as.bytes();
-    accel.extra["blas_count"] = std::to_string(as.blas_count());
-    accel.extra["blas_bytes_uncompacted"] = std::to_string(as.uncompacted_blas_bytes());
-    accel.extra["exact_meshes"] = std::to_string(as.exact_count());
-    PipelineTracer tracer(ctx, rt, as, options.debug.active() || debug_spirv_overridden(),
-                          render_feature_mask(scene, options.all_features));
-    add_cache_stats(tracer.cache_use(), accel.extra);
-    accel.pipeline = tracer.report();
-    return render_batches(ctx, scene, options, sb, tracer, accel);
+    m.accel.bytes = as->bytes();
+    m.accel.extra["blas_count"] = std::to_string(as->blas_count());
+    m.accel.extra["blas_bytes_uncompacted"] = std::to_string(as->uncompacted_blas_bytes());
+    m.accel.extra["exact_meshes"] = std::to_string(as->exact_count());
+    auto tracer = std::make_unique<PipelineTracer>(
+        ctx, std::move(rt), std::move(as), options.debug.active() || debug_spirv_overridden(),
+        render_feature_mask(scene, options.all_features));
+    add_cache_stats(tracer->cache_use(), m.accel.extra);
+    m.accel.pipeline = tracer->report();
+    m.tracer = std::move(tracer);
+    return m;
+}
+
+RenderResult render_pipeline(const VulkanContext& ctx, const FlatScene& scene,
+                             const RenderOptions& options) {
+    ModeSetup m = prepare_pipeline(ctx, scene, options);
+    return render_batches(ctx, scene, options, m);
 }
 
 } // namespace tp

@@ -7,8 +7,13 @@
 #include "render/render_options.h"
 #include "scene/flatten.h"
 #include "vulkan_rt/context.h"
+#include "vulkan_rt/render_loop.h"
 
 namespace tp {
+
+// The scene buffers, acceleration structures and ray-tracing pipeline, ready for batches.
+ModeSetup prepare_pipeline(const VulkanContext& ctx, const FlatScene& scene,
+                           const RenderOptions& options);
 
 RenderResult render_pipeline(const VulkanContext& ctx, const FlatScene& scene,
                              const RenderOptions& options);

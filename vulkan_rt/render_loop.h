@@ -13,6 +13,7 @@
 #include "vulkan_rt/scene_buffers.h"
 
 #include <map>
+#include <memory>
 #include <string>
 #include <vector>
 
@@ -54,8 +55,18 @@ struct AccelStats {
 // The scene's RenderParams with the render's seed (uploaded to BINDING_PARAMS).
 RenderParams seeded_params(const FlatScene& scene, uint32_t seed);
 
+// What a mode builds before its first batch (prepare_compute, prepare_pipeline): the scene on
+// the device, the tracer over the mode's acceleration structure, and what building them cost.
+// The tracer is declared last so that it goes before the buffers it binds.
+struct ModeSetup {
+    SceneBuffers buffers;
+    AccelStats accel;
+    std::unique_ptr<Tracer> tracer;
+};
+
+// Renders options' spp of the scene with a prepared mode (compute_renderer.h,
+// pipeline_renderer.h).
 RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
-                            const RenderOptions& options, const SceneBuffers& scene_buffers,
-                            Tracer& tracer, const AccelStats& accel);
+                            const RenderOptions& options, ModeSetup& mode);
 
 } // namespace tp

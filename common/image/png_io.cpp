@@ -11,11 +11,6 @@
 
 namespace tp {
 
-float linear_to_srgb(float x) {
-    x = std::clamp(x, 0.0f, 1.0f);
-    return x <= 0.0031308f ? 12.92f * x : 1.055f * std::pow(x, 1.0f / 2.4f) - 0.055f;
-}
-
 float srgb_to_linear(float x) {
     return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
 }
@@ -28,8 +23,7 @@ std::vector<uint8_t> tonemap_srgb8(const std::vector<float>& r, const std::vecto
         const float c[3] = {r[i], g[i], b[i]};
         const bool finite = std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]);
         for (int k = 0; k < 3; ++k) {
-            const float v = finite ? linear_to_srgb(c[k] * scale) : (k == 1 ? 0.0f : 1.0f);
-            out[3 * i + k] = uint8_t(std::lround(v * 255.0f));
+            out[3 * i + k] = uint8_t(finite ? srgb8_code(c[k] * scale) : (k == 1 ? 0u : 255u));
         }
     }
     return out;

@@ -2,6 +2,8 @@
 // tone mapping used for `--png` and compare reports.
 #pragma once
 
+#include "shared/tonemap.h"
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -12,12 +14,11 @@ namespace tp {
 // (util/output_file.h): no partial file, a device written in place. Throws RuntimeError.
 void write_png(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb);
 
-// Linear radiance to display: multiply by 2^exposure, clamp to [0, 1], apply the sRGB transfer
-// function (IEC 61966-2-1), round. Non-finite values become magenta so they cannot hide.
+// Linear radiance to display (shared/tonemap.h, srgb8_code). Non-finite values become magenta so
+// they cannot hide.
 std::vector<uint8_t> tonemap_srgb8(const std::vector<float>& r, const std::vector<float>& g,
                                    const std::vector<float>& b, float exposure_stops);
 
-float linear_to_srgb(float linear);
 float srgb_to_linear(float encoded);
 
 } // namespace tp

@@ -21,6 +21,7 @@
 #include "shared/sampling.h"
 #include "shared/surface.h"
 #include "shared/texture.h"
+#include "shared/tonemap.h"
 #include "shared/types.h"
 
 // ---- hooks ---------------------------------------------------------------------------------

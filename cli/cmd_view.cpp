@@ -1,0 +1,37 @@
+// twinpath view SCENE: the interactive progressive window (view/viewer.h).
+#include "commands.h"
+#include "scene_args.h"
+
+#include "view/viewer.h"
+
+namespace tp {
+
+struct ViewArgs : SceneArgs {
+    ViewOptions view;
+};
+
+Subcommand add_view_command(CLI::App& app) {
+    auto a = std::make_shared<ViewArgs>();
+    CLI::App* c = app.add_subcommand("view", "Interactive progressive window (Vulkan)");
+    add_scene_options(c, *a);
+    ViewOptions& v = a->view;
+    c->add_option("--frames", v.frames, "Exit after this many frames");
+    c->add_option("--screenshot", v.screenshot, "Save the last frame's window as PNG");
+    c->add_option("--script", v.script, "Replay timed input (docs/view.md)");
+    c->add_flag("--headless", v.headless, "No window: run the frame loop, report frame times");
+    c->add_option("--spp-per-frame", v.progressive.samples_per_frame,
+                  "Samples per frame (default: adapt to ~16 ms)");
+    return {c, [a] {
+                const FlatScene scene = flatten(load_scene_args(*a, 1u << 30));
+                ViewOptions v = a->view;
+                v.scene_path = a->scene;
+                v.device = a->device;
+                v.vk_mode = a->vk_mode;
+                v.threads = a->threads;
+                v.progressive.seed = a->seed;
+                v.progressive.max_spp = scene.spp;
+                return run_view(scene, v);
+            }};
+}
+
+} // namespace tp

@@ -1,0 +1,28 @@
+// The scene, film, camera and device flags that `render` and `view` share (DESIGN.md,
+// "Command line"), and the scene they describe.
+#pragma once
+
+#include "scene/flatten.h"
+
+#include <CLI/CLI.hpp>
+
+#include <optional>
+#include <string>
+
+namespace tp {
+
+struct SceneArgs {
+    std::string scene;
+    std::optional<uint32_t> spp, width, height, min_depth, max_depth;
+    uint32_t seed = 0, threads = 0;
+    std::string device, vk_mode = "auto";
+    std::string eye, target, up;
+    std::optional<float> fov;
+};
+
+void add_scene_options(CLI::App* c, SceneArgs& a);
+
+// Loads the scene (warnings on stderr) and applies the flags; `spp` replaces a missing --spp.
+Scene load_scene_args(const SceneArgs& a, std::optional<uint32_t> spp = std::nullopt);
+
+} // namespace tp

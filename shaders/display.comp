@@ -1,0 +1,36 @@
+#version 460
+// The viewer's display pass: every pixel's accumulated mean (PixelAccum, interface.h), through
+// the display transform of --png (shared/tonemap.h), packed as the 8-bit pixel of the
+// swapchain's format (display_interface.h).
+#extension GL_GOOGLE_include_directive : require
+#extension GL_EXT_scalar_block_layout : require
+
+#include "display_interface.h"
+#include "interface.h"
+#include "shared/tonemap.h"
+
+layout(local_size_x = 8, local_size_y = 8) in;
+
+layout(scalar, set = 0, binding = DISPLAY_BINDING_ACCUM) readonly buffer AccumBuffer {
+    PixelAccum accum[];
+};
+layout(scalar, set = 0, binding = DISPLAY_BINDING_PIXELS) writeonly buffer PixelBuffer {
+    uint pixels[];
+};
+layout(push_constant, scalar) uniform Push {
+    DisplayParams display;
+};
+
+void main() {
+    uvec2 p = gl_GlobalInvocationID.xy;
+    if (p.x >= display.width || p.y >= display.height) return;
+    uint i = p.y * display.width + p.x;
+    PixelAccum a = accum[i];
+    // The film's mean, sum / n in double, rounded to float as the EXR stores it.
+    vec3 mean = a.count > 0u ? vec3(a.sum / double(a.count)) : vec3(0.0f);
+    uvec3 code = uvec3(255u, 0u, 255u); // non-finite: magenta, as in the PNG
+    if (!any(isnan(mean)) && !any(isinf(mean)))
+        code = uvec3(srgb8_code(mean.r * display.scale), srgb8_code(mean.g * display.scale),
+                     srgb8_code(mean.b * display.scale));
+    pixels[i] = display_pack(code, display.bgra);
+}
