@@ -18,11 +18,15 @@ build_pkgs=(
   embree-tools
   # scripts/demo.sh reads `twinpath info --json` with python3.
   python3
+  # twinpath view: the window and its overlay (libimgui-dev carries the GLFW and Vulkan back
+  # ends).
+  libglfw3-dev libimgui-dev
 )
 # Only the test suite needs these (make test): Catch2, headless Chromium for the HTML report
-# test, spirv-val/spirv-opt for the SPIR-V checks, and a one-node Slurm cluster with its
-# munge authentication for the farm test (tests/farm/slurm_test.cpp).
-test_pkgs=(catch2 chromium spirv-tools slurm-wlm munge)
+# test, spirv-val/spirv-opt for the SPIR-V checks, a one-node Slurm cluster with its munge
+# authentication for the farm test (tests/farm/slurm_test.cpp), and a virtual X display for
+# the view tests (xvfb-run needs xauth).
+test_pkgs=(catch2 chromium spirv-tools slurm-wlm munge xvfb xauth)
 
 case "${1:-build}" in
   build) pkgs=("${build_pkgs[@]}") ;;

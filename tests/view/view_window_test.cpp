@@ -1,0 +1,154 @@
+// twinpath view through the command line: in a window under Xvfb (xvfb-run) on whatever Vulkan
+// device the machine has (lavapipe in CI), and headless.
+#include "image/exr_io.h"
+#include "support/test_paths.h"
+
+#include <catch2/catch.hpp>
+#include <png.h>
+
+#include <cstdlib>
+#include <filesystem>
+#include <fstream>
+#include <string>
+#include <vector>
+
+namespace fs = std::filesystem;
+using tp::test::run;
+using tp::test::shell_quote;
+
+namespace {
+
+struct Rgb8 {
+    int width = 0, height = 0;
+    std::vector<uint8_t> rgb;
+};
+
+Rgb8 read_png(const std::string& path) {
+    png_image image{};
+    image.version = PNG_IMAGE_VERSION;
+    REQUIRE(png_image_begin_read_from_file(&image, path.c_str()));
+    image.format = PNG_FORMAT_RGB;
+    Rgb8 out{int(image.width), int(image.height), std::vector<uint8_t>(PNG_IMAGE_SIZE(image))};
+    REQUIRE(png_image_finish_read(&image, nullptr, out.rgb.data(), 0, nullptr));
+    return out;
+}
+
+// `twinpath view ARGS` in DIR on a virtual X display of its own.
+tp::test::ProcessResult view_in_window(const fs::path& dir, const std::string& args) {
+    return run("cd " + shell_quote(dir.string()) +
+               " && xvfb-run -a -s '-screen 0 320x240x24 -nolisten tcp' " +
+               shell_quote(tp::test::twinpath_bin()) + " view " + args);
+}
+
+fs::path script(const fs::path& dir, const std::string& text) {
+    const fs::path p = dir / "script.txt";
+    std::ofstream(p) << text;
+    return p;
+}
+
+// The window against render --png of the same scene, spp and seed. Both apply the same display
+// transform (shared/tonemap.h) to the same float means; the window's runs on the device, whose
+// pow() is not correctly rounded (GLSL allows several ulp), so a channel whose exact value lies
+// within those ulp of a rounding boundary between two 8-bit codes may round the other way: at
+// most one code value, and only for the rare channel that close to a boundary.
+void check_matches_render(const fs::path& dir, const std::string& shot, uint32_t spp) {
+    const auto r = run(tp::test::twinpath("render cornell --backend vulkan --width 40 --height 30 "
+                                          "--seed 7 --spp " +
+                                          std::to_string(spp) + " -o " +
+                                          shell_quote((dir / "r.exr").string()) + " --png " +
+                                          shell_quote((dir / "r.png").string())));
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    const Rgb8 a = read_png((dir / shot).string()), b = read_png((dir / "r.png").string());
+    REQUIRE(a.width == 40);
+    REQUIRE(a.height == 30);
+    REQUIRE(b.rgb.size() == a.rgb.size());
+    size_t differing = 0, lit = 0;
+    for (size_t i = 0; i < a.rgb.size(); ++i) {
+        REQUIRE(std::abs(int(a.rgb[i]) - int(b.rgb[i])) <= 1);
+        differing += a.rgb[i] != b.rgb[i];
+        lit += b.rgb[i] > 0;
+    }
+    CHECK(differing * 100 <= a.rgb.size()); // boundary cases: rare
+    CHECK(lit * 2 > a.rgb.size());          // the image is not black
+}
+
+} // namespace
+
+TEST_CASE("view's window after N frames of 1 spp shows render --png at N spp", "[view]") {
+    const fs::path dir = tp::test::temp_dir("view-screenshot");
+    const auto v = view_in_window(dir, "cornell --width 40 --height 30 --seed 7 --frames 6 "
+                                       "--spp-per-frame 1 --screenshot shot.png --script " +
+                                           shell_quote(script(dir, "0 key H\n").string()));
+    INFO(v.out);
+    REQUIRE(v.exit_code == 0);
+    check_matches_render(dir, "shot.png", 6);
+}
+
+TEST_CASE("view --headless runs the same frame loop and reports frame times", "[view]") {
+    const fs::path dir = tp::test::temp_dir("view-headless");
+    const auto v =
+        run("cd " + shell_quote(dir.string()) + " && env -u DISPLAY -u WAYLAND_DISPLAY " +
+            tp::test::twinpath("view cornell --headless --width 40 --height 30 "
+                               "--seed 7 --frames 5 --spp-per-frame 1 "
+                               "--screenshot shot.png"));
+    INFO(v.out);
+    REQUIRE(v.exit_code == 0);
+    CHECK(v.out.find("view --headless: 5 frames: mean") != std::string::npos);
+    CHECK(v.out.find("5 spp") != std::string::npos);
+    check_matches_render(dir, "shot.png", 5);
+}
+
+TEST_CASE("a scripted camera move restarts the accumulation; S saves EXR and PNG", "[view]") {
+    const fs::path dir = tp::test::temp_dir("view-restart");
+    // Frames 0-3 accumulate 4 spp; the drag before frame 4 restarts; frames 4-5 add 2 spp; the
+    // S before frame 6 saves those 2 (frames 0-6: 7 frames).
+    const auto v = view_in_window(
+        dir, "cornell --width 40 --height 30 --seed 3 --frames 7 --spp-per-frame 1 --script " +
+                 shell_quote(
+                     script(dir, "0 key H\n2 key S\n4 orbit 25 0\n6 key S\n6 key P\n").string()));
+    INFO(v.out);
+    REQUIRE(v.exit_code == 0);
+    const tp::ExrImage before = tp::read_exr((dir / "cornell_view_1.exr").string());
+    const tp::ExrImage after = tp::read_exr((dir / "cornell_view_2.exr").string());
+    CHECK(before.integers.at("twinpath:spp") == 2);
+    CHECK(after.integers.at("twinpath:spp") == 2);
+    CHECK(after.integers.at("twinpath:seed") == 3);
+    CHECK(after.strings.at("twinpath:backend").rfind("vulkan/", 0) == 0);
+    CHECK(!after.strings.at("twinpath:device").empty());
+    CHECK(fs::file_size(dir / "cornell_view_2.png") > 0);
+    // The orbit turned the view: the two images are of different views (the mean radiance of
+    // the whole image changes as the walls move through it).
+    double sum_before = 0, sum_after = 0;
+    for (float x : before.channel("G")) sum_before += double(x);
+    for (float x : after.channel("G")) sum_after += double(x);
+    CHECK(std::abs(sum_before - sum_after) > 0.02 * sum_before);
+    // P prints a render command line with the moved camera.
+    CHECK(v.out.find("twinpath render cornell --backend vulkan") != std::string::npos);
+    CHECK(v.out.find("--spp 2 --eye ") != std::string::npos);
+}
+
+TEST_CASE("view's C compares with the CPU reference and a click diffs a pixel's paths", "[view]") {
+    const fs::path dir = tp::test::temp_dir("view-compare");
+    const auto v = view_in_window(
+        dir, "cornell --width 32 --height 24 --seed 5 --frames 6 --spp-per-frame 4 --script " +
+                 shell_quote(script(dir, "0 key H\n4 key C\n4 click 12 20\n").string()));
+    INFO(v.out);
+    REQUIRE(v.exit_code == 0);
+    // Same scene, view and estimator on both engines with independent seeds: consistent (a
+    // false alarm has probability alpha = 0.01 at most, and this pair is fixed by its seeds).
+    CHECK(v.out.find("compare, 16 spp each: consistent") != std::string::npos);
+    // Same seed, pixel and sample on both engines: the same path, vertex by vertex.
+    CHECK(v.out.find("pixel 12,20 sample 0: same paths") != std::string::npos);
+    CHECK(fs::exists(dir / "cornell_pixel_12_20_gpu.json"));
+    CHECK(fs::exists(dir / "cornell_pixel_12_20_cpu.json"));
+}
+
+TEST_CASE("view without a display says which variables and exits 3", "[view]") {
+    const auto v = run("env -u DISPLAY -u WAYLAND_DISPLAY " +
+                       tp::test::twinpath("view cornell --width 8 --height 8 --frames 1"));
+    CHECK(v.exit_code == 3);
+    CHECK(v.out.find("DISPLAY") != std::string::npos);
+    CHECK(v.out.find("WAYLAND_DISPLAY") != std::string::npos);
+    CHECK(v.out.find("--headless") != std::string::npos);
+}
