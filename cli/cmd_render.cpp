@@ -3,7 +3,6 @@
 #include "commands.h"
 #include "output_paths.h"
 #include "scene_args.h"
-#include "util/progress_bar.h"
 
 #include "compare/colormap.h"
 #include "cpu_ref/cpu_renderer.h"
@@ -12,6 +11,7 @@
 #include "scene/flatten.h"
 #include "util/error.h"
 #include "util/interrupt.h"
+#include "util/progress_bar.h"
 #include "vulkan_rt/vulkan_renderer.h"
 
 #include <fmt/core.h>
