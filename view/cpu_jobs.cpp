@@ -9,6 +9,7 @@
 
 #include <fmt/core.h>
 
+#include <chrono>
 #include <sstream>
 
 namespace tp {

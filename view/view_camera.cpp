@@ -4,6 +4,7 @@
 
 #include <fmt/core.h>
 #include <glm/geometric.hpp>
+#include <glm/gtc/constants.hpp>
 
 #include <algorithm>
 #include <cmath>
@@ -29,7 +30,7 @@ ViewCamera::ViewCamera(const FlatScene& scene) {
     if (!(distance > 0)) distance = 1.0;
     target_ = eye_ + forward * distance;
     up_ = glm::dvec3(c.up);
-    fov_ = float(2.0 * std::atan(double(c.tan_half_fov_y)) * 180.0 / 3.14159265358979323846);
+    fov_ = float(2.0 * std::atan(double(c.tan_half_fov_y)) * 180.0 / glm::pi<double>());
 }
 
 void ViewCamera::orbit(double yaw, double pitch) {
@@ -39,7 +40,7 @@ void ViewCamera::orbit(double yaw, double pitch) {
     const glm::dvec3 right = glm::normalize(glm::cross(dir, up_));
     // Keep 1 degree away from the poles, where right = dir x up is undefined.
     const double elevation = std::asin(std::clamp(glm::dot(dir, glm::normalize(up_)), -1.0, 1.0));
-    const double limit = 89.0 * 3.14159265358979323846 / 180.0;
+    const double limit = 89.0 * glm::pi<double>() / 180.0;
     const double p = std::clamp(elevation - pitch, -limit, limit) - elevation;
     offset = rotate(offset, right, -p);
     eye_ = target_ + offset;

@@ -13,6 +13,7 @@
 #include "vulkan_rt/presenter.h"
 
 #include <fmt/core.h>
+#include <glm/gtc/constants.hpp>
 
 #include <algorithm>
 #include <chrono>
@@ -36,6 +37,9 @@ constexpr double kOrbitPerPixel = 2.0;
 constexpr double kDollyPerNotch = 0.9;
 constexpr double kFovPerNotch = 2.0;
 constexpr double kFlyStep = 0.02;
+// The live compare's two-sample test estimates each pixel's variance from its own samples (none
+// from one sample) and is calibrated from 16 spp on (docs/compare.md).
+constexpr uint32_t kMinCompareSpp = 16;
 
 std::string stem(const std::string& path) {
     return std::filesystem::path(path).stem().string();
@@ -141,7 +145,8 @@ class Viewer {
   private:
     void apply(const ViewAction& a) {
         const double per_pixel = kOrbitPerPixel / double(height_);
-        const double view_height = 2.0 * std::tan(0.5 * double(camera_.fov()) * M_PI / 180.0);
+        const double view_height =
+            2.0 * std::tan(0.5 * double(camera_.fov()) * glm::pi<double>() / 180.0);
         switch (a.kind) {
         case ViewAction::Orbit:
             camera_.orbit(-a.x * per_pixel, -a.y * per_pixel);
@@ -237,6 +242,9 @@ class Viewer {
 
     void start_compare() {
         if (compare_job_) return status({"the live compare is still running"});
+        if (renderer_.spp() < kMinCompareSpp)
+            return status({fmt::format("C compares from {} spp on; the window has {}",
+                                       kMinCompareSpp, renderer_.spp())});
         compare_view_id_ = view_id_;
         compare_job_ = CpuJob::live_compare(current_scene(), renderer_.result(),
                                             o_.progressive.seed, o_.threads);
