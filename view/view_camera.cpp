@@ -79,13 +79,14 @@ Camera ViewCamera::camera(const glm::dvec3& origin, uint32_t width, uint32_t hei
 }
 
 std::string ViewCamera::render_flags() const {
-    const auto v = [](const glm::dvec3& p) {
-        // + 0.0f turns -0 into 0.
-        return fmt::format("{:.9g},{:.9g},{:.9g}", float(p.x) + 0.0f, float(p.y) + 0.0f,
-                           float(p.z) + 0.0f);
+    // Positions are doubles in the scene (scene/scene.h): 17 digits give them back exactly; the
+    // up vector is a float. + 0.0 turns -0 into 0.
+    const auto position = [](const glm::dvec3& p) {
+        return fmt::format("{:.17g},{:.17g},{:.17g}", p.x + 0.0, p.y + 0.0, p.z + 0.0);
     };
-    return fmt::format("--eye {} --target {} --up {} --fov {:.9g}", v(eye_), v(target_), v(up_),
-                       fov_);
+    const vec3 u(up_);
+    return fmt::format("--eye {} --target {} --up {:.9g},{:.9g},{:.9g} --fov {:.9g}",
+                       position(eye_), position(target_), u.x + 0.0f, u.y + 0.0f, u.z + 0.0f, fov_);
 }
 
 } // namespace tp

@@ -32,9 +32,12 @@ tp::SceneOverrides parse_flags(const std::string& flags) {
             o.fov = std::stof(value);
             continue;
         }
-        tp::vec3 v;
-        REQUIRE(std::sscanf(value.c_str(), "%f,%f,%f", &v.x, &v.y, &v.z) == 3);
-        (flag == "--eye" ? o.eye : flag == "--target" ? o.target : o.up) = v;
+        glm::dvec3 v;
+        REQUIRE(std::sscanf(value.c_str(), "%lf,%lf,%lf", &v.x, &v.y, &v.z) == 3);
+        if (flag == "--up")
+            o.up = tp::vec3(v);
+        else
+            (flag == "--eye" ? o.eye : o.target) = v;
     }
     return o;
 }
