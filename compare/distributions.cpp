@@ -41,6 +41,18 @@ double equivalent_normal(double z, double dof) {
 
 double chi2_upper(double x, double k) {
     if (!std::isfinite(x)) return 0.0;
+    if (!(x > 0.0)) return 1.0;
+    // Far below the mean Boost evaluates the lower tail P(a, y), a = k/2, y = x/2, by a series
+    // whose prefix y^a e^-y / Gamma(a+1) overflows Gamma for k above about 5000 (a tile test of
+    // a 1080p image that equals the other one). The series' terms fall by at least y/(a+1), so
+    // P(a, y) <= y^a e^-y / Gamma(a+1) * (a+1)/(a+1-y) (Abramowitz & Stegun 6.5.29); below
+    // 2^-60 the upper tail 1 - P is 1 in double.
+    const double a = 0.5 * k, y = 0.5 * x;
+    if (y < a + 1.0) {
+        const double log_lower =
+            a * std::log(y) - y - std::lgamma(a + 1.0) + std::log((a + 1.0) / (a + 1.0 - y));
+        if (log_lower < -60.0 * std::log(2.0)) return 1.0;
+    }
     return boost::math::cdf(boost::math::complement(boost::math::chi_squared(k), x));
 }
 

@@ -43,6 +43,21 @@ TEST_CASE("distribution tails match printed tables", "[compare][units]") {
     CHECK(chi2_upper(18.307, 10.0) == Approx(0.05).epsilon(1e-3));
 }
 
+TEST_CASE("the chi-square tail far below its mean at the dof of a 1080p tile test",
+          "[compare][units]") {
+    // Two equal 1920x1080 images give 32,400 tiles with statistic 0; Boost alone throws there
+    // (Gamma overflow) for k above about 5000. For large k chi-square ~ N(k, 2k): 20 standard
+    // deviations below the mean the upper tail is 1 - 3e-89, i.e. 1 in double.
+    for (const double k : {1e4, 32400.0, 1e6, 1e9}) {
+        CHECK(chi2_upper(0.0, k) == 1.0);
+        CHECK(chi2_upper(1e-300, k) == 1.0);
+        CHECK(chi2_upper(k - 20.0 * std::sqrt(2.0 * k), k) == 1.0);
+    }
+    // Above the mean Boost still answers: 2 standard deviations up is the normal tail 0.02275,
+    // to within the skewness sqrt(8/k) = 0.3 % at k = 1e6 (allow 2 %).
+    CHECK(chi2_upper(1e6 + 2.0 * std::sqrt(2e6), 1e6) == Approx(0.02275).epsilon(0.02));
+}
+
 TEST_CASE("Holm's step-down procedure, worked by hand", "[compare][units]") {
     // m = 4, level 0.05. Sorted: 0.005 <= 0.05/4 reject; 0.01 <= 0.05/3 reject;
     // 0.03 > 0.05/2 stop, so 0.04 is kept although 0.04 <= 0.05/1.
