@@ -41,7 +41,7 @@ if [[ -n $proxy && -z ${http_proxy:-} ]]; then export http_proxy=$proxy; fi
 
 work=$(mktemp -d /var/tmp/twinpath-fresh.XXXXXX)
 root=$work/root
-mounts=(proc sys dev dev/pts dev/shm)
+mounts=(proc sys sys/fs/cgroup dev dev/pts dev/shm)
 
 # Processes still running inside the root (a hung test, a daemon a package started) keep its
 # mounts busy. SIGKILL is asynchronous: repeat until none is left (10 s at most).
@@ -70,7 +70,7 @@ cleanup() {
   kill_root_processes
   for ((i = ${#mounts[@]} - 1; i >= 0; i--)); do
     m=$root/${mounts[i]}
-    if mountpoint -q "$m"; then umount "$m" || umount -l "$m" || true; fi
+    if mountpoint -q "$m"; then umount -R "$m" || umount -l "$m" || true; fi
   done
   if findmnt -rn -o TARGET | grep -q "^$root/"; then
     echo "fresh-machine-check: still mounted, left $work in place:" >&2
@@ -150,6 +150,13 @@ configure_root() {
   cp -a "$shared/." "$root/work/shared/"
   mount -t proc proc "$root/proc"
   mount -t sysfs sysfs "$root/sys"
+  # A booted Debian machine has its cgroup hierarchy mounted (systemd does it); slurmd, which the
+  # farm test starts, refuses to run without it. A slave copy: nothing done inside the root
+  # propagates back to the host's mounts.
+  if mountpoint -q /sys/fs/cgroup; then
+    mount --rbind /sys/fs/cgroup "$root/sys/fs/cgroup"
+    mount --make-rslave "$root/sys/fs/cgroup"
+  fi
   mount_dev
 }
 
