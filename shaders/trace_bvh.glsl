@@ -23,8 +23,7 @@
 // copy of the ray and the return to world space all sit behind `two_level`, which the
 // specialization constant makes a constant false, so the driver removes them: the loop keeps
 // one ray, the stack and the closest hit. This loop sets the register peak of the whole shader
-// (docs/gpu.md: 96 registers on the H200 whatever else the mask removed), so it is where a
-// scene without instancing saves registers.
+// (docs/gpu.md), so it is where a scene without instancing saves registers.
 //
 // Either way each visited node tests both children's boxes; leaves of triangles are
 // intersected at once; of two inner children met, the far one is pushed and the near one is
@@ -33,41 +32,15 @@
 #ifndef TP_SHADERS_TRACE_BVH_GLSL
 #define TP_SHADERS_TRACE_BVH_GLSL
 
-#include "bindings.glsl"
-#include "features.glsl"
-#include "shared/intersect.h"
-#include "shared/path.h"
-#include "shared/surface.h"
-#include "trace_hit.glsl"
+#include "bvh_triangles.glsl"
 
-// The BVH of vulkan_rt/bvh_builder.cpp, read as vec4s (BvhNode: 4, BvhTriangle: 4 per item) so
-// that every load is one aligned 16-byte transaction.
+// The BVH nodes of vulkan_rt/bvh_builder.cpp, read as vec4s (BvhNode: 4 per node) so that
+// every load is one aligned 16-byte transaction.
 layout(std430, set = 0, binding = BINDING_BVH_NODES) readonly buffer BvhNodeBuffer {
     vec4 bvh_node_words[];
 };
-layout(std430, set = 0, binding = BINDING_BVH_TRIS) readonly buffer BvhTriangleBuffer {
-    vec4 bvh_triangle_words[];
-};
 
 const uint BVH_INSTANCE_FLAG = 0x80000000u;
-
-// The traversal is inlined into the path loop, which traces its shadow ray where it has drawn
-// the light sample (integrator.glsl); tracing it after scattering, as the pipeline mode does,
-// made the specialized loops 3-4 % slower per spp here (docs/gpu.md, "Shadow ray after
-// scattering").
-const bool TRACE_SHADOW_AFTER_SCATTER = false;
-// The watertight triangle test re-tests a surface within the offset bound (shared/offset.h).
-const float TRACE_OFFSET_SLACK = 1.0f;
-// Triangle lights' stored normals (shared/lights.h, light_normal).
-const bool SCENE_LIGHT_NORMAL_FROM_VERTICES = false;
-
-#ifdef TP_DEBUG_SHADER
-// The traversal cost the cost view shows (debug.glsl): nodes visited and triangles tested by
-// the trace calls since the view cleared them. Only in the debug variant.
-#define TP_TRACE_COUNTS
-uint g_trace_nodes = 0u;
-uint g_trace_triangles = 0u;
-#endif
 
 BvhNode bvh_load_node(uint i) {
     vec4 a = bvh_node_words[4u * i];
@@ -142,22 +115,8 @@ bool bvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
                 uint first = c == 0u ? n.ref0 : n.ref1;
                 uint end = first + (c == 0u ? n.count0 : n.count1);
                 for (uint i = first; i < end; ++i) {
-                    vec4 a = bvh_triangle_words[4u * i];
-                    vec4 b = bvh_triangle_words[4u * i + 1u];
-                    vec4 c = bvh_triangle_words[4u * i + 2u];
-                    vec3 n = bvh_triangle_words[4u * i + 3u].xyz;
-#ifdef TP_TRACE_COUNTS
-                    ++g_trace_triangles;
-#endif
-                    vec3 tuv;
-                    if (!intersect_triangle_normal(org, wr, a.xyz, b.xyz, c.xyz, n, hit.t, tuv))
-                        continue;
+                    if (!bvh_triangle_hit(i, org, wr, two_level, inst, hit)) continue;
                     found = true;
-                    hit.t = tuv.x;
-                    // BvhTriangle words: the primitive in a.w; with one level its instance in b.w.
-                    hit.instance = two_level ? inst : floatBitsToUint(b.w);
-                    hit.primitive = floatBitsToUint(a.w);
-                    hit.bary = vec2(tuv.y, tuv.z);
                     if (any_hit) return true;
                 }
             }

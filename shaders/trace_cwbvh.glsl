@@ -24,34 +24,12 @@
 #ifndef TP_SHADERS_TRACE_CWBVH_GLSL
 #define TP_SHADERS_TRACE_CWBVH_GLSL
 
-#include "bindings.glsl"
+#include "bvh_triangles.glsl"
 #include "cwbvh.h"
-#include "features.glsl"
-#include "shared/intersect.h"
-#include "shared/path.h"
-#include "shared/surface.h"
-#include "trace_hit.glsl"
 
 layout(std430, set = 0, binding = BINDING_BVH_NODES) readonly buffer CwbvhNodeBuffer {
     uvec4 cwbvh_node_words[];
 };
-layout(std430, set = 0, binding = BINDING_BVH_TRIS) readonly buffer BvhTriangleBuffer {
-    vec4 bvh_triangle_words[];
-};
-
-// As in trace_bvh.glsl: the shadow ray is traced where the light sample is drawn.
-const bool TRACE_SHADOW_AFTER_SCATTER = false;
-// The same watertight triangle test as trace_bvh.glsl (shared/offset.h).
-const float TRACE_OFFSET_SLACK = 1.0f;
-// Triangle lights' stored normals (shared/lights.h, light_normal).
-const bool SCENE_LIGHT_NORMAL_FROM_VERTICES = false;
-
-#ifdef TP_DEBUG_SHADER
-// Nodes visited and triangles tested, for the cost view (debug.glsl); debug variant only.
-#define TP_TRACE_COUNTS
-uint g_trace_nodes = 0u;
-uint g_trace_triangles = 0u;
-#endif
 
 const uint CWBVH_NODE_BITS = 0xff000000u;
 // A group whose only hit is bit 31 and whose imask is empty names node child_base itself:
@@ -178,21 +156,8 @@ bool cwbvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
                 group = uvec2(meshes[I.mesh].bvh_root, CWBVH_ROOT_GROUP);
                 break;
             }
-            vec4 a = bvh_triangle_words[4u * i];
-            vec4 b = bvh_triangle_words[4u * i + 1u];
-            vec4 c = bvh_triangle_words[4u * i + 2u];
-            vec3 n = bvh_triangle_words[4u * i + 3u].xyz;
-#ifdef TP_TRACE_COUNTS
-            ++g_trace_triangles;
-#endif
-            vec3 tuv;
-            if (!intersect_triangle_normal(org, wr, a.xyz, b.xyz, c.xyz, n, hit.t, tuv)) continue;
+            if (!bvh_triangle_hit(i, org, wr, two_level, inst, hit)) continue;
             found = true;
-            hit.t = tuv.x;
-            // BvhTriangle words: the primitive in a.w; with one level its instance in b.w.
-            hit.instance = two_level ? inst : floatBitsToUint(b.w);
-            hit.primitive = floatBitsToUint(a.w);
-            hit.bary = vec2(tuv.y, tuv.z);
             if (any_hit) return true;
         }
         if ((group.y & CWBVH_NODE_BITS) == 0u) {

@@ -7,7 +7,7 @@ set(BUG_SPIRV_DIR ${CMAKE_CURRENT_BINARY_DIR}/bug_spirv)
 set(BUG_SPIRV)
 set(BUG_FRESNEL_SIGN common/shared/brdf.h
     "float r_parl = (eta * cos_i - cos_t)" "float r_parl = (eta * cos_i + cos_t)")
-set(BUG_SWAP_BARY shaders/trace_bvh.glsl
+set(BUG_SWAP_BARY shaders/bvh_triangles.glsl
     "hit.bary = vec2(tuv.y, tuv.z)" "hit.bary = vec2(tuv.z, tuv.y)")
 set(BUG_LIGHT_PDF common/shared/lights.h
     "return dist * dist / (cos_light * area)" "return 2.0f * dist * dist / (cos_light * area)")

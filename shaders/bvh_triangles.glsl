@@ -1,0 +1,59 @@
+// What compute mode's two traversals (trace_bvh.glsl, binary; trace_cwbvh.glsl, compressed
+// 8-wide) share: the triangle array, the constants their hooks give the path loop, the cost
+// view's counters and the exact test of one triangle.
+#ifndef TP_SHADERS_BVH_TRIANGLES_GLSL
+#define TP_SHADERS_BVH_TRIANGLES_GLSL
+
+#include "bindings.glsl"
+#include "features.glsl"
+#include "shared/intersect.h"
+#include "shared/path.h"
+#include "shared/surface.h"
+#include "trace_hit.glsl"
+
+// BvhTriangle (vulkan_rt/bvh_builder.h) read as 4 vec4s an item, so that every load is one
+// aligned 16-byte transaction: a (primitive in w), b (with one level the instance in w), c, and
+// the plane normal.
+layout(std430, set = 0, binding = BINDING_BVH_TRIS) readonly buffer BvhTriangleBuffer {
+    vec4 bvh_triangle_words[];
+};
+
+// The traversal is inlined into the path loop, which traces its shadow ray where it has drawn
+// the light sample; tracing it after scattering, as pipeline mode does, is slower here
+// (docs/gpu.md, "Shadow ray after scattering").
+const bool TRACE_SHADOW_AFTER_SCATTER = false;
+// The watertight triangle test re-tests a surface within the offset bound (shared/offset.h).
+const float TRACE_OFFSET_SLACK = 1.0f;
+// Triangle lights' stored normals (shared/lights.h, light_normal).
+const bool SCENE_LIGHT_NORMAL_FROM_VERTICES = false;
+
+#ifdef TP_DEBUG_SHADER
+// The traversal cost the cost view shows (debug.glsl): nodes visited and triangles tested by
+// the trace calls since the view cleared them. Only in the debug variant.
+#define TP_TRACE_COUNTS
+uint g_trace_nodes = 0u;
+uint g_trace_triangles = 0u;
+#endif
+
+// Tests triangle item i with the watertight test (shared/intersect.h) against the ray in the
+// space it is traversed in (origin org, wr from its direction); a hit closer than hit.t replaces
+// hit. With two levels the hit's instance is inst, the one being traversed.
+bool bvh_triangle_hit(uint i, vec3 org, WatertightRay wr, bool two_level, uint inst,
+                      inout TraceHit hit) {
+    vec4 a = bvh_triangle_words[4u * i];
+    vec4 b = bvh_triangle_words[4u * i + 1u];
+    vec4 c = bvh_triangle_words[4u * i + 2u];
+    vec3 n = bvh_triangle_words[4u * i + 3u].xyz;
+#ifdef TP_TRACE_COUNTS
+    ++g_trace_triangles;
+#endif
+    vec3 tuv;
+    if (!intersect_triangle_normal(org, wr, a.xyz, b.xyz, c.xyz, n, hit.t, tuv)) return false;
+    hit.t = tuv.x;
+    hit.instance = two_level ? inst : floatBitsToUint(b.w);
+    hit.primitive = floatBitsToUint(a.w);
+    hit.bary = vec2(tuv.y, tuv.z);
+    return true;
+}
+
+#endif // TP_SHADERS_BVH_TRIANGLES_GLSL
