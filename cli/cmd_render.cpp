@@ -153,22 +153,8 @@ int run_render(const RenderArgs& a) {
                       : tonemap_srgb8(img.channel("R"), img.channel("G"), img.channel("B"), 0.0f));
     }
     if (debug.log) {
-        PathLogInfo info;
-        info.backend = result.stats.backend;
-        info.mode = result.stats.mode;
-        info.device = result.stats.device;
-        info.scene = scene.path;
-        info.seed = a.seed;
-        info.width = flat.params.camera.width;
-        info.height = flat.params.camera.height;
-        info.spp = result.stats.spp;
-        info.max_depth = flat.params.max_depth;
-        info.min_depth = flat.params.min_depth;
-        info.pixel_x = debug.pixel_x;
-        info.pixel_y = debug.pixel_y;
-        info.dropped = result.debug.dropped;
-        info.origin = flat.origin;
-        write_path_log(*a.debug_log, info, result.debug.records);
+        write_path_log(*a.debug_log, path_log_info(result, flat, scene.path, debug),
+                       result.debug.records);
         if (result.debug.dropped)
             fmt::print(stderr,
                        "twinpath: warning: {} path-log records did not fit and were dropped\n",

@@ -27,26 +27,6 @@ std::vector<std::string> split_lines(const std::string& text) {
     return lines;
 }
 
-PathLogInfo log_info(const RenderResult& r, const FlatScene& scene, const std::string& path,
-                     const DebugRequest& d) {
-    PathLogInfo info;
-    info.backend = r.stats.backend;
-    info.mode = r.stats.mode;
-    info.device = r.stats.device;
-    info.scene = path;
-    info.seed = r.stats.seed;
-    info.width = scene.params.camera.width;
-    info.height = scene.params.camera.height;
-    info.spp = r.stats.spp;
-    info.max_depth = scene.params.max_depth;
-    info.min_depth = scene.params.min_depth;
-    info.pixel_x = d.pixel_x;
-    info.pixel_y = d.pixel_y;
-    info.dropped = r.debug.dropped;
-    info.origin = scene.origin;
-    return info;
-}
-
 } // namespace
 
 std::optional<CpuJobOutcome> CpuJob::poll() {
@@ -103,8 +83,10 @@ std::unique_ptr<CpuJob> CpuJob::pathdiff(FlatScene scene, uint32_t x, uint32_t y
         close_vulkan_device();
         RenderResult cpu = render_cpu(scene, opt);
         const std::string gpu_log = log_prefix + "_gpu.json", cpu_log = log_prefix + "_cpu.json";
-        write_path_log(gpu_log, log_info(gpu, scene, scene_path, opt.debug), gpu.debug.records);
-        write_path_log(cpu_log, log_info(cpu, scene, scene_path, opt.debug), cpu.debug.records);
+        write_path_log(gpu_log, path_log_info(gpu, scene, scene_path, opt.debug),
+                       gpu.debug.records);
+        write_path_log(cpu_log, path_log_info(cpu, scene, scene_path, opt.debug),
+                       cpu.debug.records);
         const PathDiffResult r = tp::pathdiff(gpu_log, read_path_log(gpu_log), cpu_log,
                                               read_path_log(cpu_log), PathDiffTolerances{});
         CpuJobOutcome out;

@@ -86,4 +86,24 @@ ExrImage render_exr(const RenderResult& r, const FlatScene& scene, const RenderO
     return img;
 }
 
+PathLogInfo path_log_info(const RenderResult& result, const FlatScene& scene,
+                          const std::string& scene_path, const DebugRequest& debug) {
+    PathLogInfo info;
+    info.backend = result.stats.backend;
+    info.mode = result.stats.mode;
+    info.device = result.stats.device;
+    info.scene = scene_path;
+    info.seed = result.stats.seed;
+    info.width = scene.params.camera.width;
+    info.height = scene.params.camera.height;
+    info.spp = result.stats.spp;
+    info.max_depth = scene.params.max_depth;
+    info.min_depth = scene.params.min_depth;
+    info.pixel_x = debug.pixel_x;
+    info.pixel_y = debug.pixel_y;
+    info.dropped = result.debug.dropped;
+    info.origin = scene.origin;
+    return info;
+}
+
 } // namespace tp

@@ -52,4 +52,9 @@ std::string settings_description(const FlatScene& scene, const DebugRequest& deb
 ExrImage render_exr(const RenderResult& result, const FlatScene& scene,
                     const RenderOptions& options);
 
+// The header of a render's path log (docs/debugging.md): its backend, seed, size, depths, the
+// logged pixel and the origin its positions are relative to. `scene_path` names the scene file.
+PathLogInfo path_log_info(const RenderResult& result, const FlatScene& scene,
+                          const std::string& scene_path, const DebugRequest& debug);
+
 } // namespace tp
