@@ -1,6 +1,8 @@
 // Chi-square goodness-of-fit of the BSDF samplers of shared/brdf.h: the full modified Phong
 // mixture against phong_pdf, and the dielectric's reflect/refract choice against Fresnel.
+#include "chi2/direction_at.h"
 #include "chi2/suite.h"
+#include "support/fresnel_reference.h"
 
 #include "shared/brdf.h"
 
@@ -18,16 +20,6 @@ struct PhongCase {
     double theta_o_degrees; // angle between wo and the normal
     glm::dvec3 normal;      // any direction: the samplers must work in every frame
 };
-
-// A unit vector at angle theta from n, at a fixed azimuth about it.
-tp::vec3 direction_at(const glm::dvec3& n, double theta_degrees) {
-    const glm::dvec3 a = std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
-    const glm::dvec3 t = glm::normalize(glm::cross(n, a));
-    const glm::dvec3 b = glm::cross(n, t);
-    const double th = glm::radians(theta_degrees), phi = 0.7;
-    return tp::vec3(std::cos(th) * n + std::sin(th) * (std::cos(phi) * t + std::sin(phi) * b));
-}
-
 } // namespace
 
 TEST_CASE("Phong mixture sampling follows phong_pdf", "[chi2]") {
@@ -72,21 +64,6 @@ TEST_CASE("Phong mixture sampling follows phong_pdf", "[chi2]") {
     }
 }
 
-namespace {
-
-// Fresnel reflectance of a smooth dielectric for unpolarised light, in double precision from
-// the textbook equations (Born & Wolf; pbrt-v4 eq. 9.12-9.13), independent of brdf.h.
-double fresnel_reference(double cos_i, double eta) {
-    const double sin2_t = (1.0 - cos_i * cos_i) / (eta * eta);
-    if (sin2_t >= 1.0) return 1.0;
-    const double cos_t = std::sqrt(1.0 - sin2_t);
-    const double rs = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-    const double rp = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-    return 0.5 * (rs * rs + rp * rp);
-}
-
-} // namespace
-
 TEST_CASE("dielectric chooses reflection with the Fresnel probability", "[chi2]") {
     // A binomial test per configuration: the number of reflections among 10^6 draws against
     // Fresnel's F. Light arriving from outside (wo on the normal's side) and from inside,
@@ -105,7 +82,7 @@ TEST_CASE("dielectric chooses reflection with the Fresnel probability", "[chi2]"
             const double sin_o = std::sqrt(1.0 - c.cos_o * c.cos_o);
             const tp::vec3 wo(float(sin_o), 0.0f, float(c.inside ? -c.cos_o : c.cos_o));
             const double eta = c.inside ? 1.0 / double(c.ior) : double(c.ior);
-            const double F = fresnel_reference(double(std::abs(wo.z)), eta);
+            const double F = tp::test::fresnel_reference(double(std::abs(wo.z)), eta);
             Uniform u(600 + uint64_t(index));
             uint64_t reflected = 0;
             for (uint64_t i = 0; i < kSamples; ++i) {

@@ -2,6 +2,7 @@
 // the shared samplers in a compute shader (sample_draws.comp) from the renderer's own random
 // numbers, and judged by the same harness (tests/support/chi2.h) at the same Sidak-corrected
 // level (tests/chi2/suite.h; the same 26 tests).
+#include "chi2/direction_at.h"
 #include "chi2/lights.h"
 #include "chi2/suite.h"
 #include "gpu_harness.h"
@@ -54,16 +55,6 @@ PointSamples points(const std::vector<glm::vec4>& draws) {
     for (const glm::vec4& d : draws) s.points.emplace_back(d.x, d.y);
     return s;
 }
-
-// A unit vector at angle theta from n, at a fixed azimuth about it (as the CPU suite).
-tp::vec3 direction_at(const glm::dvec3& n, double theta_degrees) {
-    const glm::dvec3 a = std::abs(n.x) < 0.9 ? glm::dvec3(1, 0, 0) : glm::dvec3(0, 1, 0);
-    const glm::dvec3 t = glm::normalize(glm::cross(n, a));
-    const glm::dvec3 b = glm::cross(n, t);
-    const double th = glm::radians(theta_degrees), phi = 0.7;
-    return tp::vec3(std::cos(th) * n + std::sin(th) * (std::cos(phi) * t + std::sin(phi) * b));
-}
-
 } // namespace
 
 TEST_CASE("GPU: cosine and Phong lobe and sphere and triangle samplers follow their pdfs",

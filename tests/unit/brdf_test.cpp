@@ -3,6 +3,7 @@
 // agreement with phong_eval and phong_pdf, the mirror, and the smooth dielectric (Fresnel,
 // Snell's law, total internal reflection).
 #include "shared/brdf.h"
+#include "support/fresnel_reference.h"
 
 #include <catch2/catch.hpp>
 #include <glm/glm.hpp>
@@ -182,20 +183,6 @@ TEST_CASE("perfect mirror reflects about the normal with weight ks", "[mirror]")
     CHECK(tp::mirror_sample(tp::vec3(1.0f), n, -wo).lobe == tp::LOBE_NONE);
 }
 
-namespace {
-
-// Fresnel for unpolarised light from the textbook equations in double (pbrt-v4 eq. 9.12-9.13).
-double fresnel_reference(double cos_i, double eta) {
-    const double sin2_t = (1.0 - cos_i * cos_i) / (eta * eta);
-    if (sin2_t >= 1.0) return 1.0;
-    const double cos_t = std::sqrt(1.0 - sin2_t);
-    const double rs = (cos_i - eta * cos_t) / (cos_i + eta * cos_t);
-    const double rp = (eta * cos_i - cos_t) / (eta * cos_i + cos_t);
-    return 0.5 * (rs * rs + rp * rp);
-}
-
-} // namespace
-
 TEST_CASE("Fresnel reflectance of a smooth dielectric", "[dielectric]") {
     // Against the textbook formula to 1e-6 (a dozen float operations on values <= 1; near the
     // critical angle the square root of 1 - sin^2(theta_t) magnifies its rounding, 2^-24, by
@@ -208,7 +195,7 @@ TEST_CASE("Fresnel reflectance of a smooth dielectric", "[dielectric]") {
             CAPTURE(eta, c);
             const double cos2_t = 1.0 - (1.0 - c * c) / (eta * eta);
             CHECK(std::abs(double(tp::fresnel_dielectric(float(c), float(eta))) -
-                           fresnel_reference(c, eta)) <=
+                           tp::test::fresnel_reference(c, eta)) <=
                   1e-6 + 0x1p-24 / (2.0 * std::max(cos2_t, 1e-3)));
         }
     CHECK(tp::fresnel_dielectric(1.0f, 1.5f) == Approx(0.04f).epsilon(1e-6));
