@@ -18,8 +18,8 @@ TEST_CASE("stress: scale 1e-4 to 1e5 on the CPU", "[stress]") {
     require_all(scale_cases(cpu_engine(), small_size()));
 }
 
-// Regression (issue 23, item 2): with the description in float, every one of these cases found
-// a different image (docs/stress.md, "Position before and after").
+// Regression: with the description in float, every one of these cases found a different image
+// (docs/stress.md, "Camera-relative world").
 TEST_CASE("stress: a scene moved by 1e2 to 1e6 on the CPU", "[stress]") {
     require_all(position_cases(cpu_engine(), small_size()));
 }

@@ -43,7 +43,7 @@ Size gpu_size() {
 
 // Cases lavapipe cannot run, left out below and checked in a [!shouldfail] test case: the IOR 3
 // furnaces' 512 bounces exceed its 65535-iteration loop budget (on the H200 they pass, bench
-// --stress; docs/stress.md, "Fixed, and what is left").
+// --stress; docs/stress.md, "IOR 3 furnaces: truncated at the depth cap").
 const std::vector<std::string> kOpenDielectric = {"glass furnace IOR 3", "total internal"};
 
 } // namespace
