@@ -1,4 +1,4 @@
-// twinpath bench (docs/benchmarks.md): the sections BenchOptions asks for, on each scene and
+// twinpath bench (docs/bench.md): the sections BenchOptions asks for, on each scene and
 // each backend and mode, into one JSON result and the files derived from it.
 #pragma once
 
