@@ -1,5 +1,5 @@
-// What the driver says about a pipeline it creates (RenderStats::pipeline, docs/gpu.md, "What
-// the driver says"): VK_EXT_pipeline_creation_feedback on every pipeline where the device has
+// What the driver says about a pipeline it creates (RenderStats::pipeline, docs/gpu.md,
+// "Pipeline statistics"): VK_EXT_pipeline_creation_feedback on every pipeline where the device has
 // it (did the application's pipeline cache spare the compilation, how long did creation take),
 // and on request (`--pipeline-stats`) VK_KHR_pipeline_executable_properties: each executable the
 // pipeline was compiled into, with every statistic the driver keeps (register counts, ...).
