@@ -3,11 +3,11 @@
 #include "bench/host_info.h"
 #include "cpu_ref/cpu_renderer.h"
 #include "util/error.h"
-#include "vulkan_rt/vulkan_renderer.h"
 
 #include <fmt/format.h>
 
 #include <algorithm>
+#include <optional>
 
 namespace tp::bench {
 namespace {
@@ -33,11 +33,9 @@ std::vector<Backend> expand_backends(const std::vector<std::string>& requested,
             add({"cpu", "embree", cpu_device(cpu_threads)});
             continue;
         }
-        const std::string mode = r == "vulkan"                ? ""
-                                 : r.rfind("vulkan:", 0) == 0 ? r.substr(7)
-                                                              : "-";
-        if (mode == "-" ||
-            (!mode.empty() && mode != "compute" && mode != "compute-wide" && mode != "pipeline"))
+        const std::optional<VkBackend> one =
+            r.rfind("vulkan:", 0) == 0 ? parse_vk_backend(r.substr(7)) : std::nullopt;
+        if (r != "vulkan" && !one)
             input_error("--backends: unknown backend '{}' (expected cpu, vulkan, vulkan:compute, "
                         "vulkan:compute-wide or vulkan:pipeline)",
                         r);
@@ -49,13 +47,19 @@ std::vector<Backend> expand_backends(const std::vector<std::string>& requested,
             continue;
         }
         const std::string where = fmt::format("{} ({})", device.name, device.driver);
-        const std::vector<std::string> modes = device.modes();
-        // compute-wide (compute mode over the wide BVH) only when asked for by name.
-        const std::string device_mode = mode == "compute-wide" ? "compute" : mode;
-        for (const std::string& m : modes)
-            if (mode.empty() || m == device_mode) add({"vulkan", mode.empty() ? m : mode, where});
-        if (!mode.empty() && std::find(modes.begin(), modes.end(), device_mode) == modes.end())
-            skipped.push_back({r, fmt::format("{} does not offer {} mode", device.name, mode)});
+        const std::vector<VkMode> modes = device.modes();
+        const auto add_vulkan = [&](const VkBackend& b) {
+            add({"vulkan", vk_backend_name(b), where, b});
+        };
+        if (!one) {
+            // compute-wide (compute mode over the wide BVH) only when asked for by name.
+            for (const VkMode m : modes) add_vulkan({m, BvhLayout::binary});
+        } else if (std::find(modes.begin(), modes.end(), one->mode) != modes.end()) {
+            add_vulkan(*one);
+        } else {
+            skipped.push_back(
+                {r, fmt::format("{} does not offer {} mode", device.name, vk_backend_name(*one))});
+        }
     }
     return out;
 }
@@ -63,7 +67,7 @@ std::vector<Backend> expand_backends(const std::vector<std::string>& requested,
 RenderResult render_on(const Backend& backend, const FlatScene& scene, const RenderOptions& options,
                        const std::string& device_selector, bool pipeline_statistics) {
     if (backend.name == "cpu") return render_cpu(scene, options);
-    VulkanOptions vk = backend_vulkan_options(backend.mode, device_selector);
+    VulkanOptions vk = backend_vulkan_options(backend.vulkan, device_selector);
     vk.pipeline_statistics = pipeline_statistics;
     return render_vulkan(scene, options, vk);
 }

@@ -1,10 +1,12 @@
 // The backends and modes a benchmark runs: `cpu` (Embree), and `vulkan`, which stands for
 // every mode the selected device offers (compute everywhere; pipeline where the device has
-// the ray-tracing extensions), or one of them as `vulkan:compute` / `vulkan:pipeline`.
+// the ray-tracing extensions), or one Vulkan backend as `vulkan:compute`, `vulkan:pipeline` or
+// `vulkan:compute-wide` (vulkan_renderer.h, VkBackend).
 #pragma once
 
 #include "render/render_options.h"
 #include "scene/flatten.h"
+#include "vulkan_rt/vulkan_renderer.h"
 
 #include <string>
 #include <vector>
@@ -13,8 +15,9 @@ namespace tp::bench {
 
 struct Backend {
     std::string name;   // cpu, vulkan
-    std::string mode;   // embree, compute, pipeline
+    std::string mode;   // embree, or the Vulkan backend's word (vk_backend_name)
     std::string device; // what it runs on, in words (CPU model and threads, or GPU and driver)
+    VkBackend vulkan{}; // the Vulkan backend that `mode` names
     std::string label() const { return name + "/" + mode; }
 };
 

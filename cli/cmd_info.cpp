@@ -30,8 +30,9 @@ nlohmann::json vulkan_json() {
             j["api_version"] = d.api_version;
             j["driver"] = d.driver;
             j["memory_bytes"] = d.memory_bytes;
-            j["modes"] = d.modes();
-            if (d.compute()) j["auto_mode"] = resolve_vk_mode("auto", d);
+            j["modes"] = nlohmann::json::array();
+            for (const VkMode m : d.modes()) j["modes"].push_back(vk_mode_name(m));
+            if (d.compute()) j["auto_mode"] = vk_mode_name(resolve_vk_mode(std::nullopt, d));
             if (!d.compute()) j["compute_missing"] = d.compute_missing;
             if (!d.pipeline()) j["pipeline_missing"] = d.pipeline_missing;
             v["devices"].push_back(j);

@@ -137,7 +137,7 @@ int run_render(const RenderArgs& a) {
     } else {
         VulkanOptions vk;
         vk.device = a.device;
-        vk.mode = a.vk_mode;
+        vk.mode = parse_vk_mode_request(a.vk_mode);
         if (a.bvh) vk.bvh = parse_bvh_layout(*a.bvh);
         vk.pipeline_statistics = a.pipeline_stats.has_value();
         result = render_vulkan(flat, opt, vk);

@@ -26,7 +26,7 @@ Subcommand add_view_command(CLI::App& app) {
                 ViewOptions v = a->view;
                 v.scene_path = a->scene;
                 v.device = a->device;
-                v.vk_mode = a->vk_mode;
+                v.vk_mode = parse_vk_mode_request(a->vk_mode);
                 v.threads = a->threads;
                 v.progressive.seed = a->seed;
                 v.progressive.max_spp = scene.spp;

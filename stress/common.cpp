@@ -35,10 +35,10 @@ Engine cpu_engine(uint32_t threads) {
             }};
 }
 
-Engine vulkan_engine(const std::string& mode, const std::string& device) {
-    return {"vulkan", mode, [mode, device](const FlatScene& f, const RenderOptions& o) {
-                return render_vulkan(f, o, backend_vulkan_options(mode, device));
-            }};
+Engine vulkan_engine(const VkBackend& backend, const std::string& device) {
+    const VulkanOptions vk = backend_vulkan_options(backend, device);
+    return {"vulkan", vk_backend_name(backend),
+            [vk](const FlatScene& f, const RenderOptions& o) { return render_vulkan(f, o, vk); }};
 }
 
 Size small_size() {

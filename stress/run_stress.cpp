@@ -12,6 +12,7 @@
 #include <nlohmann/json.hpp>
 
 #include <filesystem>
+#include <optional>
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -106,42 +107,45 @@ int run_stress(const StressOptions& o) {
             render_cases(cpu_engine(o.threads));
             continue;
         }
-        if (b.rfind("vulkan", 0) != 0) input_error("--backends: unknown backend '{}'", b);
-        const std::string want = b == "vulkan" ? "" : b.substr(b.find(':') + 1);
-        std::vector<std::string> modes;
+        const std::optional<VkBackend> want =
+            b.rfind("vulkan:", 0) == 0 ? parse_vk_backend(b.substr(7)) : std::nullopt;
+        if (b != "vulkan" && !want) input_error("--backends: unknown backend '{}'", b);
+        std::vector<VkBackend> backends;
         try {
             const std::vector<DeviceInfo> devices = list_vulkan_devices();
             const DeviceInfo& d = select_device(devices, o.device);
             // compute-wide (compute mode over the wide BVH) only when asked for by name.
-            for (const std::string m : {"compute", "compute-wide", "pipeline"}) {
-                if (want.empty() ? m == "compute-wide" : want != m) continue;
+            const std::vector<VkBackend> candidates =
+                want ? std::vector<VkBackend>{*want}
+                     : std::vector<VkBackend>{{VkMode::compute}, {VkMode::pipeline}};
+            for (const VkBackend& v : candidates) {
                 const std::string missing =
-                    m == "pipeline" ? d.pipeline_missing : d.compute_missing;
+                    v.mode == VkMode::pipeline ? d.pipeline_missing : d.compute_missing;
                 if (missing.empty())
-                    modes.push_back(m);
+                    backends.push_back(v);
                 else
-                    skip("vulkan", m, fmt::format("{} lacks {}", d.name, missing));
+                    skip("vulkan", vk_backend_name(v), fmt::format("{} lacks {}", d.name, missing));
             }
         } catch (const RuntimeError& e) {
-            skip("vulkan", want.empty() ? "any" : want, e.what());
+            skip("vulkan", want ? vk_backend_name(*want) : "any", e.what());
             continue;
         }
-        for (const std::string& m : modes) {
+        for (const VkBackend& v : backends) {
             try {
                 // Compute mode's ray queries cover both BVH layouts (watertight_cases_gpu).
-                if (m != "compute-wide") {
-                    const VulkanContext ctx(o.device, m);
-                    if (m == "compute") {
+                if (v.bvh == BvhLayout::binary) {
+                    const VulkanContext ctx(o.device, v.mode);
+                    if (v.mode == VkMode::compute) {
                         add(brdf_cases_glsl(ctx, s));
                         add(watertight_cases_gpu(ctx, s, o.assets_dir));
                     } else {
                         add(watertight_cases_pipeline(ctx, s, o.assets_dir));
                     }
                 }
-                render_cases(vulkan_engine(m, o.device));
+                render_cases(vulkan_engine(v, o.device));
             } catch (const RuntimeError& e) {
                 runtime_failure = true;
-                skip("vulkan", m, std::string("runtime failure: ") + e.what());
+                skip("vulkan", vk_backend_name(v), std::string("runtime failure: ") + e.what());
             }
         }
     }

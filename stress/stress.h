@@ -15,7 +15,8 @@
 
 namespace tp {
 class VulkanContext;
-}
+struct VkBackend;
+} // namespace tp
 
 namespace tp::stress {
 
@@ -39,12 +40,12 @@ std::string describe(const CaseResult& r); // one line for logs and test failure
 // A renderer: CPU (Embree) or Vulkan in one mode.
 struct Engine {
     std::string backend; // cpu, vulkan
-    std::string mode;    // embree, compute, pipeline
+    std::string mode;    // embree, or the Vulkan backend's word (vk_backend_name)
     std::function<RenderResult(const FlatScene&, const RenderOptions&)> render;
 };
 
 Engine cpu_engine(uint32_t threads = 0);
-Engine vulkan_engine(const std::string& mode, const std::string& device = "");
+Engine vulkan_engine(const VkBackend& backend, const std::string& device = "");
 
 // How large each case is: the CI tests use small(), the bench large().
 struct Size {

@@ -13,6 +13,7 @@
 #include "scene/generators.h"
 #include "scene/load.h"
 #include "vulkan_rt/ray_queries.h"
+#include "vulkan_rt/vk_mode.h"
 
 #include <fmt/format.h>
 
@@ -259,7 +260,8 @@ std::vector<CaseResult> watertight_cases_gpu(const VulkanContext& ctx, const Siz
     // Both BVH layouts of compute mode (--bvh binary, wide).
     std::vector<CaseResult> out;
     for (BvhLayout layout : {BvhLayout::binary, BvhLayout::wide}) {
-        const std::string mode = layout == BvhLayout::wide ? "compute/wide" : "compute";
+        const std::string mode =
+            std::string(vk_mode_name(VkMode::compute)) + (layout == BvhLayout::wide ? "/wide" : "");
         for (CaseResult& r : run_cases(s, assets_dir, "vulkan", mode, [&](const RaySet& rs) {
                  return closest_hits_compute(ctx, rs.scene, rs.rays, layout);
              }))
@@ -270,9 +272,9 @@ std::vector<CaseResult> watertight_cases_gpu(const VulkanContext& ctx, const Siz
 
 std::vector<CaseResult> watertight_cases_pipeline(const VulkanContext& ctx, const Size& s,
                                                   const std::string& assets_dir) {
-    return run_cases(s, assets_dir, "vulkan", "pipeline", [&ctx](const RaySet& rs) {
-        return closest_hits_pipeline(ctx, rs.scene, rs.rays);
-    });
+    return run_cases(
+        s, assets_dir, "vulkan", vk_mode_name(VkMode::pipeline),
+        [&ctx](const RaySet& rs) { return closest_hits_pipeline(ctx, rs.scene, rs.rays); });
 }
 
 } // namespace tp::stress

@@ -80,7 +80,7 @@ class Viewer {
           camera_(scene), width_(scene.params.camera.width), height_(scene.params.camera.height) {
         if (!o.script.empty()) script_ = read_view_script(o.script);
         text_.device = ctx.info().name;
-        text_.mode = renderer_.mode();
+        text_.mode = vk_mode_name(renderer_.mode());
         text_.scene = o.scene_path;
         const std::vector<std::string> features = analyze_features(scene).names();
         for (const std::string& f : features)
@@ -195,8 +195,8 @@ class Viewer {
         case 'P':
             fmt::print("twinpath render {} --backend vulkan --vk-mode {} --seed {} --width {} "
                        "--height {} --max-depth {} --min-depth {} --spp {} {}\n",
-                       o_.scene_path, renderer_.mode(), o_.progressive.seed, width_, height_,
-                       scene_.params.max_depth, scene_.params.min_depth,
+                       o_.scene_path, vk_mode_name(renderer_.mode()), o_.progressive.seed, width_,
+                       height_, scene_.params.max_depth, scene_.params.min_depth,
                        std::max(1u, renderer_.spp()), camera_.render_flags());
             std::fflush(stdout);
             break;

@@ -8,6 +8,7 @@
 
 #include "scene/flatten.h"
 #include "vulkan_rt/progressive_renderer.h"
+#include "vulkan_rt/vk_mode.h"
 
 #include <cstdint>
 #include <string>
@@ -15,9 +16,9 @@
 namespace tp {
 
 struct ViewOptions {
-    std::string scene_path; // in P's command line and the saved files' names
-    std::string device;     // --device
-    std::string vk_mode = "auto";
+    std::string scene_path;         // in P's command line and the saved files' names
+    std::string device;             // --device
+    VkModeRequest vk_mode;          // --vk-mode; none: auto
     ProgressiveOptions progressive; // seed, --spp (max_spp), --spp-per-frame
     uint32_t frames = 0;            // --frames: stop after this many; 0: when the window closes
     std::string screenshot;         // --screenshot: the last frame's window content as PNG

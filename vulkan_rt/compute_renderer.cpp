@@ -58,7 +58,7 @@ class ComputeTracer : public Tracer {
         bind(BINDING_BVH_TRIS, bvh_.triangles);
     }
 
-    const char* mode() const override { return "compute"; }
+    VkMode mode() const override { return VkMode::compute; }
     const PipelineCacheUse& cache_use() const { return program_.cache_use(); }
     const PipelineReport& report() const { return program_.report(); }
     VkPipelineStageFlags shader_stage() const override {

@@ -127,7 +127,7 @@ std::vector<DeviceInfo> VulkanInstance::devices() const {
     return list;
 }
 
-VulkanContext::VulkanContext(const std::string& selector, const std::string& vk_mode,
+VulkanContext::VulkanContext(const std::string& selector, VkModeRequest vk_mode,
                              bool pipeline_statistics, const PresentationRequest* presentation)
     : instance_(std::make_unique<VulkanInstance>(presentation ? presentation->instance_extensions
                                                               : std::vector<std::string>{})),
@@ -135,7 +135,7 @@ VulkanContext::VulkanContext(const std::string& selector, const std::string& vk_
     const std::vector<DeviceInfo> devices = instance_->devices();
     info_ = select_device(devices, selector);
     mode_ = resolve_vk_mode(vk_mode, info_);
-    const bool ray_tracing = mode_ == "pipeline";
+    const bool ray_tracing = mode_ == VkMode::pipeline;
     physical_ = instance_->physical_devices()[info_.index];
 
     VkPhysicalDeviceProperties props;

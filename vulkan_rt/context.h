@@ -54,7 +54,7 @@ class VulkanContext {
     // `vk_mode` (--vk-mode) resolves to there (resolve_vk_mode). `pipeline_statistics`
     // (--pipeline-stats): enable VK_KHR_pipeline_executable_properties where the device has it.
     // `presentation`: also open the device for a window's swapchain (PresentationRequest).
-    explicit VulkanContext(const std::string& selector, const std::string& vk_mode = "compute",
+    explicit VulkanContext(const std::string& selector, VkModeRequest vk_mode = VkMode::compute,
                            bool pipeline_statistics = false,
                            const PresentationRequest* presentation = nullptr);
     ~VulkanContext();
@@ -63,7 +63,7 @@ class VulkanContext {
 
     const VulkanInstance& instance() const { return *instance_; }
     const DeviceInfo& info() const { return info_; }
-    const std::string& mode() const { return mode_; } // "compute" or "pipeline"
+    VkMode mode() const { return mode_; }
     VkPhysicalDevice physical() const { return physical_; }
     VkDevice device() const { return device_; }
     VkQueue queue() const { return queue_; }
@@ -90,7 +90,7 @@ class VulkanContext {
     void release();
     std::unique_ptr<VulkanInstance> instance_;
     DeviceInfo info_;
-    std::string mode_;
+    VkMode mode_ = VkMode::compute;
     VkPhysicalDevice physical_ = VK_NULL_HANDLE;
     VkPhysicalDeviceLimits limits_{};
     VkPhysicalDeviceMemoryProperties memory_{};

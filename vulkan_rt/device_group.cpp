@@ -25,7 +25,7 @@ RenderResult render_on_devices(const FlatScene& scene, const RenderOptions& opti
         input_error("--device {}: --time-limit is for one device; give --spp", vk.device);
     if (!options.checkpoints.empty()) input_error("checkpoints are for one device");
     const std::vector<DeviceInfo> devices = select_devices(list_vulkan_devices(), vk.device);
-    const std::string mode = resolve_common_mode(vk.mode, devices);
+    const VkMode mode = resolve_common_mode(vk.mode, devices);
 
     SampleShare share(options.sample_offset, scene.spp, devices.size());
     std::vector<RenderResult> parts(devices.size());
@@ -42,8 +42,8 @@ RenderResult render_on_devices(const FlatScene& scene, const RenderOptions& opti
                     const SampleShare::Range r = share.take(i, rate);
                     return RenderOptions::SampleGrant{r.begin, r.count};
                 };
-                parts[i] = mode == "pipeline" ? render_pipeline(ctx, scene, o)
-                                              : render_compute(ctx, scene, o, vk.bvh);
+                parts[i] = mode == VkMode::pipeline ? render_pipeline(ctx, scene, o)
+                                                    : render_compute(ctx, scene, o, vk.bvh);
                 if (ctx.instance().validation_messages() > 0)
                     runtime_error("the Vulkan validation layer reported {} message(s) on {}",
                                   ctx.instance().validation_messages(), devices[i].name);

@@ -15,10 +15,10 @@ bool DeviceCaps::has(const char* extension) const {
     return std::find(extensions.begin(), extensions.end(), extension) != extensions.end();
 }
 
-std::vector<std::string> DeviceInfo::modes() const {
-    std::vector<std::string> m;
-    if (compute()) m.push_back("compute");
-    if (pipeline()) m.push_back("pipeline");
+std::vector<VkMode> DeviceInfo::modes() const {
+    std::vector<VkMode> m;
+    if (compute()) m.push_back(VkMode::compute);
+    if (pipeline()) m.push_back(VkMode::pipeline);
     return m;
 }
 
@@ -99,16 +99,14 @@ std::string pipeline_mode_missing(const DeviceCaps& caps) {
     return join(missing);
 }
 
-std::string resolve_vk_mode(const std::string& requested, const DeviceInfo& d) {
-    if (requested == "compute") return "compute";
-    if (requested == "auto") return d.pipeline() ? "pipeline" : "compute";
-    if (requested != "pipeline")
-        input_error("--vk-mode {}: expected auto, compute or pipeline", requested);
+VkMode resolve_vk_mode(VkModeRequest requested, const DeviceInfo& d) {
+    if (!requested) return d.pipeline() ? VkMode::pipeline : VkMode::compute;
+    if (*requested == VkMode::compute) return VkMode::compute;
     if (!d.pipeline())
         runtime_error("--vk-mode pipeline: Vulkan device {} ({}) cannot run the ray-tracing "
                       "pipeline mode: it lacks {}; use --vk-mode compute (auto picks it there)",
                       d.index, d.name, d.pipeline_missing);
-    return "pipeline";
+    return VkMode::pipeline;
 }
 
 const DeviceInfo& select_device(const std::vector<DeviceInfo>& devices,
@@ -166,12 +164,10 @@ std::vector<DeviceInfo> select_devices(const std::vector<DeviceInfo>& devices,
     return chosen;
 }
 
-std::string resolve_common_mode(const std::string& requested,
-                                const std::vector<DeviceInfo>& devices) {
+VkMode resolve_common_mode(VkModeRequest requested, const std::vector<DeviceInfo>& devices) {
     const bool all_pipeline = std::all_of(devices.begin(), devices.end(),
                                           [](const DeviceInfo& d) { return d.pipeline(); });
-    const std::string mode =
-        requested == "auto" ? (all_pipeline ? "pipeline" : "compute") : requested;
+    const VkMode mode = requested ? *requested : all_pipeline ? VkMode::pipeline : VkMode::compute;
     for (const DeviceInfo& d : devices) resolve_vk_mode(mode, d); // throws for what cannot run
     return mode;
 }

@@ -3,6 +3,8 @@
 // device_query.cpp; everything here is plain data and pure functions (unit tested).
 #pragma once
 
+#include "vulkan_rt/vk_mode.h"
+
 #include <cstdint>
 #include <string>
 #include <vector>
@@ -43,7 +45,7 @@ struct DeviceInfo {
 
     bool compute() const { return compute_missing.empty(); }
     bool pipeline() const { return pipeline_missing.empty(); }
-    std::vector<std::string> modes() const;
+    std::vector<VkMode> modes() const;
 };
 
 // "1.3.230" from a VK_MAKE_API_VERSION value.
@@ -61,10 +63,10 @@ const std::vector<const char*>& pipeline_extensions();
 // ray-generation shaders, and everything compute mode needs (the same shading code runs).
 std::string pipeline_mode_missing(const DeviceCaps& caps);
 
-// The mode that runs for a --vk-mode request (auto, compute or pipeline) on a device: auto is
-// pipeline where the device supports it, else compute. Throws RuntimeError (exit code 3) for
-// pipeline on a device without it, naming what is missing; InputError for another request.
-std::string resolve_vk_mode(const std::string& requested, const DeviceInfo& device);
+// The mode that runs for a --vk-mode request on a device: auto is pipeline where the device
+// supports it, else compute. Throws RuntimeError (exit code 3) for pipeline on a device without
+// it, naming what is missing.
+VkMode resolve_vk_mode(VkModeRequest requested, const DeviceInfo& device);
 
 // The device a --device selector names: an index, or a case-insensitive substring of the
 // name; empty picks the first compute-capable device of the best type (discrete, integrated,
@@ -83,7 +85,6 @@ std::vector<DeviceInfo> select_devices(const std::vector<DeviceInfo>& devices,
                                        const std::string& selector);
 // The mode that every one of `devices` runs for a --vk-mode request, so that their samples are
 // of one estimator: auto is pipeline when every device supports it, else compute.
-std::string resolve_common_mode(const std::string& requested,
-                                const std::vector<DeviceInfo>& devices);
+VkMode resolve_common_mode(VkModeRequest requested, const std::vector<DeviceInfo>& devices);
 
 } // namespace tp

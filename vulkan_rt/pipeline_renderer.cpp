@@ -40,7 +40,7 @@ class PipelineTracer : public Tracer {
         }
     }
 
-    const char* mode() const override { return "pipeline"; }
+    VkMode mode() const override { return VkMode::pipeline; }
     const PipelineCacheUse& cache_use() const { return program_.cache_use(); }
     const PipelineReport& report() const { return program_.report(); }
     VkPipelineStageFlags shader_stage() const override {

@@ -18,8 +18,8 @@ ModeSetup prepare(const VulkanContext& ctx, const FlatScene& scene, const Progre
     RenderOptions options;
     options.seed = o.seed;
     options.all_features = o.all_features;
-    return ctx.mode() == "pipeline" ? prepare_pipeline(ctx, scene, options)
-                                    : prepare_compute(ctx, scene, options, o.bvh);
+    return ctx.mode() == VkMode::pipeline ? prepare_pipeline(ctx, scene, options)
+                                          : prepare_compute(ctx, scene, options, o.bvh);
 }
 
 double seconds_since(std::chrono::steady_clock::time_point t0) {
@@ -114,7 +114,7 @@ RenderResult ProgressiveRenderer::result() const {
     RenderResult r;
     RenderStats& st = r.stats;
     st.backend = "vulkan";
-    st.mode = mode_.tracer->mode();
+    st.mode = vk_mode_name(mode_.tracer->mode());
     st.device = ctx_.info().name;
     st.scene = scene_.name;
     st.seed = options_.seed;

@@ -48,7 +48,7 @@ class ProgressiveRenderer {
     uint32_t spp() const;  // samples of every pixel (whole passes)
     uint64_t rays() const; // camera, extension and shadow rays since the last restart
     const Camera& camera() const { return params_.camera; }
-    const char* mode() const { return mode_.tracer->mode(); }
+    VkMode mode() const { return mode_.tracer->mode(); }
 
     // Tone-maps the accumulators into display_pixels(): `bgra` byte order (display_interface.h),
     // radiance scaled by 2^exposure_stops.

@@ -34,7 +34,7 @@ RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
     RenderResult result;
     RenderStats& st = result.stats;
     st.backend = "vulkan";
-    st.mode = tracer.mode();
+    st.mode = vk_mode_name(tracer.mode());
     st.device = ctx.info().name;
     st.scene = scene.name;
     st.seed = options.seed;

@@ -11,6 +11,7 @@
 #include "vulkan_rt/buffer.h"
 #include "vulkan_rt/context.h"
 #include "vulkan_rt/scene_buffers.h"
+#include "vulkan_rt/vk_mode.h"
 
 #include <map>
 #include <memory>
@@ -22,7 +23,7 @@ namespace tp {
 class Tracer {
   public:
     virtual ~Tracer() = default;
-    virtual const char* mode() const = 0; // RenderStats::mode: "compute" or "pipeline"
+    virtual VkMode mode() const = 0;
     // The stage of the shader that writes the accumulators (barriers).
     virtual VkPipelineStageFlags shader_stage() const = 0;
     // Points slot `binding` (interface.h: scene, accumulator and counter slots) at `buffer`.

@@ -30,8 +30,8 @@ std::unique_ptr<VulkanContext> open_device;
 std::string open_request;
 
 const VulkanContext& open_context(const VulkanOptions& vk) {
-    const std::string request =
-        vk.device + '\n' + vk.mode + '\n' + (vk.pipeline_statistics ? "statistics" : "");
+    const std::string request = vk.device + '\n' + vk_mode_request_name(vk.mode) + '\n' +
+                                (vk.pipeline_statistics ? "statistics" : "");
     if (!open_device || open_request != request) {
         open_device.reset(); // one device at a time
         open_device = std::make_unique<VulkanContext>(vk.device, vk.mode, vk.pipeline_statistics);
@@ -45,8 +45,8 @@ const VulkanContext& open_context(const VulkanOptions& vk) {
 RenderResult render_on(const VulkanContext& ctx, const FlatScene& scene,
                        const RenderOptions& options, BvhLayout layout) {
     try {
-        return ctx.mode() == "pipeline" ? render_pipeline(ctx, scene, options)
-                                        : render_compute(ctx, scene, options, layout);
+        return ctx.mode() == VkMode::pipeline ? render_pipeline(ctx, scene, options)
+                                              : render_compute(ctx, scene, options, layout);
     } catch (...) {
         open_device.reset();
         throw;
@@ -55,11 +55,24 @@ RenderResult render_on(const VulkanContext& ctx, const FlatScene& scene,
 
 } // namespace
 
-VulkanOptions backend_vulkan_options(const std::string& mode, const std::string& device) {
+std::string vk_backend_name(const VkBackend& b) {
+    const std::string mode = vk_mode_name(b.mode);
+    return b.mode == VkMode::compute && b.bvh == BvhLayout::wide ? mode + "-wide" : mode;
+}
+
+std::optional<VkBackend> parse_vk_backend(const std::string& word) {
+    for (const VkBackend b : {VkBackend{VkMode::compute, BvhLayout::binary},
+                              VkBackend{VkMode::compute, BvhLayout::wide},
+                              VkBackend{VkMode::pipeline, BvhLayout::binary}})
+        if (word == vk_backend_name(b)) return b;
+    return std::nullopt;
+}
+
+VulkanOptions backend_vulkan_options(const VkBackend& backend, const std::string& device) {
     VulkanOptions vk;
     vk.device = device;
-    vk.mode = mode == "compute-wide" ? "compute" : mode;
-    if (mode == "compute-wide") vk.bvh = BvhLayout::wide;
+    vk.mode = backend.mode;
+    vk.bvh = backend.bvh;
     return vk;
 }
 
@@ -72,7 +85,7 @@ RenderResult render_vulkan(const FlatScene& scene, const RenderOptions& options,
     r.stats.scene_features = analyze_features(scene).names();
     r.stats.feature_mask = render_feature_mask(scene, options.all_features);
     r.stats.feature_variant = options.all_features ? "all" : "scene";
-    r.stats.extra["vk_mode_requested"] = vk.mode;
+    r.stats.extra["vk_mode_requested"] = vk_mode_request_name(vk.mode);
     if (several) return r;
     const VulkanContext& ctx = *open_device;
     r.stats.extra["driver"] = ctx.info().driver;

@@ -5,6 +5,9 @@
 #include "scene/flatten.h"
 #include "vulkan_rt/bvh_builder.h"
 #include "vulkan_rt/device_info.h"
+#include "vulkan_rt/vk_mode.h"
+
+#include <optional>
 
 #include <string>
 #include <vector>
@@ -15,7 +18,7 @@ struct VulkanOptions {
     // --device: index or name substring; empty: the best device; "all" or a comma-separated
     // list: several devices at once (device_group.h).
     std::string device;
-    std::string mode = "auto"; // --vk-mode: auto, compute or pipeline (resolve_vk_mode)
+    VkModeRequest mode; // --vk-mode; none: auto (resolve_vk_mode)
     // --bvh: compute mode's BVH layout (bvh_builder.h). The default is the one that traced
     // faster on every scene measured (BENCHMARKS.md, "h200-wide-bvh").
     BvhLayout bvh = BvhLayout::binary;
@@ -24,10 +27,19 @@ struct VulkanOptions {
     bool pipeline_statistics = false;
 };
 
-// The options of a Vulkan backend as `twinpath bench --backends vulkan:MODE` and the stress suite
-// name it: MODE is auto, compute, pipeline, or compute-wide (compute mode over the compressed
-// 8-wide BVH, `render --vk-mode compute --bvh wide`).
-VulkanOptions backend_vulkan_options(const std::string& mode, const std::string& device);
+// A Vulkan backend as `twinpath bench --backends vulkan:WORD` and the stress suite name it: a mode
+// and compute mode's BVH layout.
+struct VkBackend {
+    VkMode mode = VkMode::compute;
+    BvhLayout bvh = BvhLayout::binary;
+};
+// Its word: compute, pipeline, or compute-wide (compute mode over the compressed 8-wide BVH,
+// `render --vk-mode compute --bvh wide`).
+std::string vk_backend_name(const VkBackend& backend);
+// The backend a word names; nullopt for any other word.
+std::optional<VkBackend> parse_vk_backend(const std::string& word);
+// The options that render on it.
+VulkanOptions backend_vulkan_options(const VkBackend& backend, const std::string& device);
 
 // Renders on the selected device in the mode the request resolves to there (RenderStats::mode
 // says which ran). Throws RuntimeError (exit code 3) for Vulkan failures, for pipeline mode on a

@@ -108,5 +108,5 @@ TEST_CASE("device all names every GPU, or the CPU device when it is alone", "[fa
     CHECK(selects_several("all"));
     CHECK(selects_several("0,1"));
     CHECK_FALSE(selects_several("1"));
-    CHECK(resolve_common_mode("auto", all) == "compute"); // no pipeline capabilities set
+    CHECK(resolve_common_mode(std::nullopt, all) == VkMode::compute); // no pipeline caps set
 }

@@ -1,7 +1,7 @@
 // Pipeline mode's host logic, without a device (lavapipe cannot run it; CI tests it here):
 // the shader binding table's layout for several handle sizes and alignments, the TLAS instance
-// records, the bottom-level build inputs and the scene limits, and which mode a device and a
-// --vk-mode request lead to.
+// records, the bottom-level build inputs and the scene limits, which mode a device and a
+// --vk-mode request lead to, and the words of the modes.
 #include "scene/flatten.h"
 #include "scene/generators.h"
 #include "scene/load.h"
@@ -11,6 +11,8 @@
 #include "vulkan_rt/accel_inputs.h"
 #include "vulkan_rt/device_info.h"
 #include "vulkan_rt/sbt_layout.h"
+#include "vulkan_rt/vk_mode.h"
+#include "vulkan_rt/vulkan_renderer.h"
 
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -18,6 +20,8 @@
 #include <algorithm>
 #include <cmath>
 #include <cstring>
+#include <optional>
+#include <string>
 
 using namespace tp;
 
@@ -292,19 +296,52 @@ TEST_CASE("pipeline mode needs its extensions and features and compute mode's", 
 
 TEST_CASE("auto picks pipeline where supported and pipeline elsewhere is a clear error", "[gpu]") {
     const DeviceInfo rt = device_with(pipeline_caps());
-    CHECK(rt.modes() == std::vector<std::string>{"compute", "pipeline"});
-    CHECK(resolve_vk_mode("auto", rt) == "pipeline");
-    CHECK(resolve_vk_mode("compute", rt) == "compute");
-    CHECK(resolve_vk_mode("pipeline", rt) == "pipeline");
+    CHECK(rt.modes() == std::vector<VkMode>{VkMode::compute, VkMode::pipeline});
+    CHECK(resolve_vk_mode(std::nullopt, rt) == VkMode::pipeline);
+    CHECK(resolve_vk_mode(VkMode::compute, rt) == VkMode::compute);
+    CHECK(resolve_vk_mode(VkMode::pipeline, rt) == VkMode::pipeline);
 
     const DeviceInfo plain = device_with(compute_caps());
-    CHECK(plain.modes() == std::vector<std::string>{"compute"});
-    CHECK(resolve_vk_mode("auto", plain) == "compute");
-    CHECK(resolve_vk_mode("compute", plain) == "compute");
-    CHECK_THROWS_AS(resolve_vk_mode("pipeline", plain), RuntimeError); // exit code 3
-    CHECK_THROWS_WITH(resolve_vk_mode("pipeline", plain),
+    CHECK(plain.modes() == std::vector<VkMode>{VkMode::compute});
+    CHECK(resolve_vk_mode(std::nullopt, plain) == VkMode::compute);
+    CHECK(resolve_vk_mode(VkMode::compute, plain) == VkMode::compute);
+    CHECK_THROWS_AS(resolve_vk_mode(VkMode::pipeline, plain), RuntimeError); // exit code 3
+    CHECK_THROWS_WITH(resolve_vk_mode(VkMode::pipeline, plain),
                       Catch::Contains("cannot run the ray-tracing pipeline mode") &&
                           Catch::Contains("VK_KHR_ray_tracing_pipeline") &&
                           Catch::Contains("--vk-mode compute"));
-    CHECK_THROWS_AS(resolve_vk_mode("rtx", rt), InputError); // exit code 2
+}
+
+// The words are what the command line reads and the outputs write (RenderStats::mode in the
+// stats JSON, the bench and stress reports): saved files and the other tests depend on them.
+TEST_CASE("the mode and backend words read back as what they name; other words are refused",
+          "[gpu]") {
+    CHECK(std::string(vk_mode_name(VkMode::compute)) == "compute");
+    CHECK(std::string(vk_mode_name(VkMode::pipeline)) == "pipeline");
+    CHECK(std::string(vk_mode_request_name(std::nullopt)) == "auto");
+    for (const VkMode m : {VkMode::compute, VkMode::pipeline}) {
+        CHECK(parse_vk_mode(vk_mode_name(m)) == m);
+        CHECK(parse_vk_mode_request(vk_mode_name(m)) == VkModeRequest(m));
+        CHECK(std::string(vk_mode_request_name(m)) == vk_mode_name(m));
+    }
+    CHECK(parse_vk_mode_request("auto") == std::nullopt);
+    CHECK_FALSE(parse_vk_mode("auto")); // a request, not a mode that runs
+    CHECK_FALSE(parse_vk_mode("Compute"));
+    CHECK_FALSE(parse_vk_mode(""));
+    CHECK_THROWS_AS(parse_vk_mode_request("rtx"), InputError); // exit code 2
+    CHECK_THROWS_WITH(parse_vk_mode_request("rtx"),
+                      "--vk-mode rtx: expected auto, compute or pipeline");
+
+    for (const std::string word : {"compute", "compute-wide", "pipeline"}) {
+        const std::optional<VkBackend> b = parse_vk_backend(word);
+        REQUIRE(b);
+        CHECK(vk_backend_name(*b) == word);
+    }
+    CHECK(parse_vk_backend("compute")->bvh == BvhLayout::binary);
+    CHECK(parse_vk_backend("compute-wide")->mode == VkMode::compute);
+    CHECK(parse_vk_backend("compute-wide")->bvh == BvhLayout::wide);
+    CHECK(parse_vk_backend("pipeline")->mode == VkMode::pipeline);
+    CHECK_FALSE(parse_vk_backend("pipeline-wide"));
+    CHECK_FALSE(parse_vk_backend("auto"));
+    CHECK_FALSE(parse_vk_backend("compute/wide"));
 }

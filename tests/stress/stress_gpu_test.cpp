@@ -23,12 +23,12 @@ struct CloseVulkanDeviceAtEnd : Catch::TestEventListenerBase {
 CATCH_REGISTER_LISTENER(CloseVulkanDeviceAtEnd)
 
 VulkanContext& context() {
-    static VulkanContext ctx("", "compute");
+    static VulkanContext ctx("", VkMode::compute);
     return ctx;
 }
 
 Engine gpu() {
-    return vulkan_engine("compute");
+    return vulkan_engine(VkBackend{VkMode::compute});
 }
 
 // The GPU renders are slower on lavapipe: a smaller image, the same expectations.
@@ -109,7 +109,7 @@ TEST_CASE("stress GPU: same-seed renders match the CPU", "[stress][gpu]") {
 // The geometry cases and the same-seed replay again over the compressed 8-wide BVH (--bvh wide):
 // its quantized boxes must not lose the far, huge, flat and degenerate triangles either.
 TEST_CASE("stress GPU: geometry and same-seed renders with the wide BVH", "[stress][gpu]") {
-    const Engine wide = vulkan_engine("compute-wide");
+    const Engine wide = vulkan_engine(VkBackend{VkMode::compute, BvhLayout::wide});
     require_all(range_cases(wide, gpu_size()));
     require_all(degenerate_cases(wide, gpu_size()));
     require_all(twin_cases(cpu_engine(), wide, gpu_size()));
