@@ -1,5 +1,6 @@
-// Closest-hit queries on the CPU reference's acceleration structure (embree_accel.h: Embree with
-// the exact-triangle filter), for checks that aim rays at a scene directly.
+// Closest-hit and occlusion queries on the CPU reference's acceleration structure
+// (embree_accel.h: Embree with the exact-triangle filter), for checks that aim rays at a scene
+// directly.
 #pragma once
 
 #include "render/closest_hits.h"

@@ -1,10 +1,10 @@
 #version 460
-// Closest hits for vulkan_rt/ray_queries.h in compute mode: one ray per invocation through the
+// Ray queries for vulkan_rt/ray_queries.h in compute mode: one ray per invocation through the
 // compute mode's trace include (trace_bvh.glsl, or with TP_TRACE_WIDE trace_cwbvh.glsl; the
-// render shader's bindings and BVH), the
-// closest hit's distance back. On lavapipe every loop of a SIMD group stops silently once the group has
-// iterated 65535 times (shaders/accumulate.glsl); a probe loop after the trace reports whether
-// that budget held, so that a cut traversal is never mistaken for a leak.
+// render shader's bindings and BVH, in the shape its feature mask gives), the closest hit and
+// the occlusion query's answer back. On lavapipe every loop of a SIMD group stops silently once
+// the group has iterated 65535 times (shaders/accumulate.glsl); a probe loop after the traces
+// reports whether that budget held, so that a cut traversal is never mistaken for a miss.
 #extension GL_GOOGLE_include_directive : require
 
 #include "bindings.glsl"
@@ -14,12 +14,7 @@
 #include "trace_bvh.glsl"
 #endif
 
-struct RayHit {
-    float t;
-    uint found;
-    uint budget_held;
-    uint pad0;
-};
+#include "ray_query_interface.h"
 
 layout(local_size_x = 64) in;
 layout(scalar, set = 0, binding = BINDING_COUNT) readonly buffer RayBuffer {
@@ -36,9 +31,12 @@ void main() {
     RayHit o;
     o.found = trace_closest(rays[i], h) ? 1u : 0u;
     o.t = h.t;
+    o.instance = h.instance;
+    o.primitive = h.primitive;
+    o.bary = h.bary;
+    o.occluded = trace_occluded(rays[i]) ? 1u : 0u;
     uint n = 0u;
     for (uint k = 0u; k < batch.probe_iterations; ++k) ++n;
     o.budget_held = n == batch.probe_iterations ? 1u : 0u;
-    o.pad0 = 0u;
     hits[i] = o;
 }

@@ -3,8 +3,9 @@
 // triangles. Each ray starts outside the surface, in the cone of directions that cross all the
 // faces around the target from their front side: then any ray through the target, moved by
 // rounding, still crosses one of those faces next to it (they share the edge or vertex without
-// a gap), so a watertight intersector reports a hit at t <= |target - origin| (1 + 1e-4).
-// Anything else (no hit, or a farther one) is a leak and counted as a miss; 0 are allowed.
+// a gap), so a watertight intersector reports a hit at t <= |target - origin| (1 + 1e-4), and
+// its occlusion query (the shadow ray's) answers occluded. Anything else (no hit, a farther one,
+// or not occluded) is a leak and counted as a miss; 0 are allowed.
 // The 1e-4 covers the rounding of the target and of t (the faces meet at the target; a farther
 // hit is another part of the mesh at least ~1e-3 of the mesh size behind).
 #include "stress/common.h"
@@ -207,19 +208,20 @@ CaseResult verdict(const RaySet& rs, const ClosestHits& traced, const std::strin
                          rs.vertices);
     c.backend = backend;
     c.mode = mode;
-    c.expected = "0 misses: every ray hits at t <= |target - origin| (1 + 1e-4)";
-    uint64_t misses = 0;
+    c.expected = "0 misses: every ray hits at t <= |target - origin| (1 + 1e-4) and is occluded";
+    uint64_t misses = 0, unoccluded = 0;
     for (size_t i = 0; i < rs.rays.size(); ++i) {
         c.nan += std::isnan(t[i]);
         c.inf += found[i] && std::isinf(t[i]);
-        if (!found[i] || !(t[i] <= rs.t_target[i] * (1.0f + 1e-4f))) {
+        unoccluded += !traced.occluded[i];
+        if (!found[i] || !(t[i] <= rs.t_target[i] * (1.0f + 1e-4f)) || !traced.occluded[i]) {
             ++misses;
         }
     }
     c.checked = rs.rays.size();
     c.pass = misses == 0 && truncated == 0 && c.nan == 0 && c.inf == 0 && c.checked >= 1000000;
     c.measured = fmt::format(
-        "{} misses in {} rays{}{}{}", misses, rs.rays.size(),
+        "{} misses ({} not occluded) in {} rays{}{}{}", misses, unoccluded, rs.rays.size(),
         truncated ? fmt::format(", {} traversals cut by the loop budget", truncated) : "",
         rs.boundary_edges ? fmt::format(" ({} boundary edges left out: the mesh "
                                         "has holes)",

@@ -4,6 +4,7 @@
 #include "closest_hits_rgen.spv.h"
 #include "closest_hits_wide_comp.spv.h"
 #include "shaders/interface.h"
+#include "shaders/ray_query_interface.h"
 #include "vulkan_rt/accel_structures.h"
 #include "vulkan_rt/barriers.h"
 #include "vulkan_rt/bvh_builder.h"
@@ -18,17 +19,21 @@
 namespace tp {
 namespace {
 
-// One ray's answer from closest_hits.comp or closest_hits.rgen.
-struct RayHit {
-    float t;
-    uint32_t found, budget_held, pad0;
-};
+void store(const RayHit& h, size_t i, ClosestHits& out) {
+    out.t[i] = h.t;
+    out.found[i] = uint8_t(h.found);
+    out.instance[i] = h.instance;
+    out.primitive[i] = h.primitive;
+    out.bary[i] = h.bary;
+    out.occluded[i] = uint8_t(h.occluded);
+}
 
 } // namespace
 
 ClosestHits closest_hits_compute(const VulkanContext& ctx, const FlatScene& scene,
-                                 const std::vector<Ray>& all_rays, BvhLayout layout) {
-    const BvhBuild bvh = build_bvh(scene, FEATURES_ALL, layout);
+                                 const std::vector<Ray>& all_rays, BvhLayout layout,
+                                 uint32_t features) {
+    const BvhBuild bvh = build_bvh(scene, features, layout);
     const bool wide = layout == BvhLayout::wide;
     const SceneBuffers sb = upload_scene(ctx, scene, scene.params, bvh.mesh_roots, 0);
     const BvhBuffers bb = upload_bvh(ctx, bvh);
@@ -42,7 +47,7 @@ ClosestHits closest_hits_compute(const VulkanContext& ctx, const FlatScene& scen
     // Whatever slots the render interface adds after these (debug buffers) get the placeholder
     // too: the rays and hits follow at BINDING_COUNT.
     while (bound.size() < BINDING_COUNT) bound.push_back(&dummy);
-    ClosestHits out{std::vector<float>(all_rays.size()), std::vector<uint8_t>(all_rays.size())};
+    ClosestHits out(all_rays.size());
     // Chunks of 2^18 rays: a few MB per dispatch, and a cut traversal is retried alone.
     const size_t chunk = size_t(1) << 18;
     for (size_t begin = 0; begin < all_rays.size(); begin += chunk) {
@@ -59,7 +64,7 @@ ClosestHits closest_hits_compute(const VulkanContext& ctx, const FlatScene& scen
                 ctx, wide ? tp_spirv_closest_hits_wide_comp : tp_spirv_closest_hits_comp,
                 wide ? sizeof(tp_spirv_closest_hits_wide_comp) : sizeof(tp_spirv_closest_hits_comp),
                 {bytes_of(rays)}, {rays.size() * sizeof(RayHit)}, &bp, sizeof(bp),
-                uint32_t(rays.size() + 63) / 64, bound);
+                uint32_t(rays.size() + 63) / 64, bound, features);
             const std::vector<RayHit> hits = as_vector<RayHit>(res[0]);
             std::vector<Ray> again;
             std::vector<size_t> again_index;
@@ -69,8 +74,7 @@ ClosestHits closest_hits_compute(const VulkanContext& ctx, const FlatScene& scen
                     again_index.push_back(index[i]);
                     continue;
                 }
-                out.t[index[i]] = hits[i].t;
-                out.found[index[i]] = uint8_t(hits[i].found);
+                store(hits[i], index[i], out);
             }
             rays.swap(again);
             index.swap(again_index);
@@ -117,11 +121,8 @@ ClosestHits closest_hits_pipeline(const VulkanContext& ctx, const FlatScene& sce
     });
     std::vector<RayHit> h(rays.size());
     std::memcpy(h.data(), readback.mapped(), hit_bytes);
-    ClosestHits out{std::vector<float>(h.size()), std::vector<uint8_t>(h.size())};
-    for (size_t i = 0; i < h.size(); ++i) {
-        out.t[i] = h[i].t;
-        out.found[i] = uint8_t(h[i].found);
-    }
+    ClosestHits out(h.size());
+    for (size_t i = 0; i < h.size(); ++i) store(h[i], i, out);
     return out;
 }
 

@@ -1,31 +1,27 @@
-// The compute mode's ray queries (BVH built by vulkan_rt/bvh_builder.cpp, traversed by
-// shaders/trace_bvh.glsl, or in the compressed 8-wide layout by shaders/trace_cwbvh.glsl) against
-// Embree's on the same scenes: every bundled scene and a generated one with hundreds of
-// instances, each in both layouts and with both shapes of the BVH: two levels (the all-features
-// shader) and one level (the shader specialized to a mask without instancing, which the builder
-// then gives one world-space tree). Closest hit (instance, primitive,
-// distance) and occlusion must agree for random rays. Rays that meet two surfaces at the same
-// distance (coplanar faces, a shared edge) may name either: such a tie passes when the GPU's
-// triangle lies at Embree's distance along the ray. Up to 0.1 % may differ otherwise: float
-// rounding decides grazing rays, and a tie of the two-level shader is re-tested in world
-// space, not in the object space where it was found. A hit that named the wrong instance or
-// primitive would fail on every ray.
+// The compute mode's ray queries (vulkan_rt/ray_queries.h: the BVH built by
+// vulkan_rt/bvh_builder.cpp, traversed by shaders/trace_bvh.glsl, or in the compressed 8-wide
+// layout by shaders/trace_cwbvh.glsl) against Embree's on the same scenes: every bundled scene
+// and a generated one with hundreds of instances, each in both layouts and with both shapes of
+// the BVH: two levels (the all-features shader) and one level (the shader specialized to a mask
+// without instancing, which the builder then gives one world-space tree). Closest hit
+// (instance, primitive, distance, barycentrics) and occlusion must agree for random rays. Rays
+// that meet two surfaces at the same distance (coplanar faces, a shared edge) may name either:
+// such a tie passes when the GPU's triangle lies at Embree's distance along the ray. Up to 0.1 %
+// may differ otherwise: float rounding decides grazing rays, and a tie of the two-level shader
+// is re-tested in world space, not in the object space where it was found. A hit that named the
+// wrong instance or primitive, or gave the wrong vertex its weight, would fail on every ray.
 #include "gpu_harness.h"
-
-#include "trace_rays.spv.h"
-#include "trace_rays_wide.spv.h"
 
 #include "cpu_ref/embree_accel.h"
 #include "scene/flatten.h"
 #include "scene/generators.h"
 #include "scene/load.h"
 #include "scene/world_vertex.h"
-#include "shaders/interface.h"
 #include "shared/features.h"
 #include "shared/intersect.h"
 #include "shared/surface.h"
 #include "vulkan_rt/bvh_builder.h"
-#include "vulkan_rt/scene_buffers.h"
+#include "vulkan_rt/ray_queries.h"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
@@ -35,13 +31,6 @@
 
 namespace tp::test {
 namespace {
-
-struct TraceResult {
-    float t;
-    uint32_t instance, primitive, found;
-    vec2 bary;
-    uint32_t occluded, pad0;
-};
 
 // Two hundred instances of an icosphere and a box under random similarity transforms.
 FlatScene instanced_scene() {
@@ -98,19 +87,25 @@ std::vector<Ray> random_rays(const FlatScene& scene, size_t n, uint32_t seed) {
 // near the floor met it at t ~ 1e-3 with the engines 2e-8 apart (2.5e-5 t), ties all the same.
 const double kTieDistance = 1e-6;
 
+// The hit point's error, in units of max|origin| + t: ~170 ulp. The object-space ray M^-1 o of
+// an instance adds a few ulp of |M^-1| |o|, which the scaled instances of these scenes (x0.045
+// to x4) magnify.
+const double kHitPointError = 1e-5;
+
 double tie_scale(const Ray& ray, float t) {
     const vec3 o = glm::abs(ray.origin);
     return double(std::max(o.x, std::max(o.y, o.z))) + double(t);
 }
 
-// Whether the ray meets the triangle that the GPU's result names, placed in world space as
-// the one-level structures place it (scene/world_vertex.h), at distance t.
-bool meets_at(const FlatScene& scene, const Ray& ray, const TraceResult& g, float t) {
-    if (g.instance >= scene.instances.size()) return false;
-    const Instance& inst = scene.instances[g.instance];
+// Whether the ray meets the triangle `primitive` of `instance`, placed in world space as the
+// one-level structures place it (scene/world_vertex.h), at distance t.
+bool meets_at(const FlatScene& scene, const Ray& ray, uint32_t instance, uint32_t primitive,
+              float t) {
+    if (instance >= scene.instances.size()) return false;
+    const Instance& inst = scene.instances[instance];
     const MeshInfo& m = scene.meshes[inst.mesh];
-    if (g.primitive >= m.triangle_count) return false;
-    const uvec3 tri = scene.triangles[m.first_triangle + g.primitive];
+    if (primitive >= m.triangle_count) return false;
+    const uvec3 tri = scene.triangles[m.first_triangle + primitive];
     const auto place = [&](uint32_t v) {
         return world_vertex(inst, scene.positions[m.first_vertex + v]);
     };
@@ -124,51 +119,28 @@ bool meets_at(const FlatScene& scene, const Ray& ray, const TraceResult& g, floa
 void compare_with_embree(const FlatScene& scene, uint32_t features, BvhLayout layout) {
     const BvhBuild bvh = build_bvh(scene, features, layout);
     REQUIRE(bvh.one_level == !feature_on(features, FEATURE_INSTANCING));
-    const RenderParams params = scene.params;
-    const SceneBuffers sb = upload_scene(gpu_context(), scene, params, bvh.mesh_roots, 0);
-    const BvhBuffers bvh_buffers = upload_bvh(gpu_context(), bvh);
-    const Buffer dummy(gpu_context(), 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
-    std::vector<const Buffer*> bound;
-    for (const Buffer& b : sb.slots) bound.push_back(&b);
-    bound.push_back(&bvh_buffers.nodes);
-    bound.push_back(&bvh_buffers.triangles);
-    bound.push_back(&dummy); // accumulators
-    bound.push_back(&dummy); // counters
-    bound.push_back(&dummy); // debug buffer (debug variant only)
-    bound.push_back(&dummy); // AOVs (debug variant only)
-    static_assert(BINDING_AOV + 1 == BINDING_COUNT, "every interface slot is bound above");
-
     const std::vector<Ray> rays = random_rays(scene, 20000, 11);
-    BatchParams bp{};
-    bp.sample_count = uint32_t(rays.size());
-    bp.bvh_top_root = bvh.top_root;
-    const bool wide = layout == BvhLayout::wide;
-    const auto out =
-        run_shader(wide ? tp_spirv_trace_rays_wide : tp_spirv_trace_rays,
-                   wide ? sizeof(tp_spirv_trace_rays_wide) : sizeof(tp_spirv_trace_rays),
-                   {bytes_of(rays)}, {rays.size() * sizeof(TraceResult)}, &bp, sizeof(bp),
-                   uint32_t(rays.size() + 63) / 64, bound, features);
-    const std::vector<TraceResult> gpu = as_vector<TraceResult>(out[0]);
+    const ClosestHits gpu = closest_hits_compute(gpu_context(), scene, rays, layout, features);
 
     const EmbreeAccel embree(scene);
-    size_t hits = 0, hit_mismatch = 0, ties = 0, occl_mismatch = 0;
-    double worst_t = 0.0;
+    size_t hits = 0, hit_mismatch = 0, ties = 0, occl_mismatch = 0, bary_mismatch = 0;
+    double worst_t = 0.0, worst_bary = 0.0;
     for (size_t i = 0; i < rays.size(); ++i) {
         const Hit h = embree.intersect(rays[i]);
-        const TraceResult& g = gpu[i];
         hits += h.found;
-        occl_mismatch += embree.occluded(rays[i]) != (g.occluded != 0);
-        if (h.found != (g.found != 0)) {
+        occl_mismatch += embree.occluded(rays[i]) != (gpu.occluded[i] != 0);
+        if (h.found != (gpu.found[i] != 0)) {
             ++hit_mismatch;
             continue;
         }
         if (!h.found) continue;
-        const double dt = std::abs(double(g.t) - double(h.t));
-        if (g.instance != h.instance || g.primitive != h.primitive) {
+        const double dt = std::abs(double(gpu.t[i]) - double(h.t));
+        if (gpu.instance[i] != h.instance || gpu.primitive[i] != h.primitive) {
             // A tie (coplanar surfaces, a shared edge): the distance must still agree, and the
             // triangle the GPU names must be there.
             ++ties;
-            if (dt > kTieDistance * tie_scale(rays[i], h.t) || !meets_at(scene, rays[i], g, h.t))
+            if (dt > kTieDistance * tie_scale(rays[i], h.t) ||
+                !meets_at(scene, rays[i], gpu.instance[i], gpu.primitive[i], h.t))
                 ++hit_mismatch;
             continue;
         }
@@ -185,21 +157,35 @@ void compare_with_embree(const FlatScene& scene, uint32_t features, BvhLayout la
         const vec3 ng = glm::normalize(instance_normal_to_world(inst, glm::cross(b - a, c - a)));
         const double cos_i = std::abs(double(glm::dot(ng, rays[i].dir)));
         worst_t = std::max(worst_t, dt * cos_i / tie_scale(rays[i], h.t));
+        // The barycentrics place the hit point on the triangle: a difference (du, dv) moves it
+        // by du (B - A) + dv (C - A) in world space, measured in the units of t's error and
+        // held to the same bound. Weights given to the wrong vertices move it by a fraction of
+        // the triangle's size on almost every ray.
+        const glm::dvec3 wa = world_vertex(inst, a), wb = world_vertex(inst, b),
+                         wc = world_vertex(inst, c);
+        const glm::dvec2 db = glm::dvec2(gpu.bary[i]) - glm::dvec2(h.bary);
+        const double moved =
+            glm::length(db.x * (wb - wa) + db.y * (wc - wa)) / tie_scale(rays[i], h.t);
+        worst_bary = std::max(worst_bary, moved);
+        bary_mismatch += moved >= kHitPointError;
     }
     const size_t allowed = rays.size() / 1000;
     INFO(scene.name << ": " << hits << " of " << rays.size() << " rays hit; hit mismatches "
                     << hit_mismatch << ", primitive ties " << ties << ", occlusion mismatches "
                     << occl_mismatch << ", worst t error x cos(incidence) / (max|origin| + t) "
-                    << worst_t << ", BVH " << bvh_layout_name(layout) << ", "
+                    << worst_t << ", worst hit point moved by the barycentrics / (max|origin| + t) "
+                    << worst_bary << " (" << bary_mismatch << " rays above the bound, "
+                    << gpu.truncated << " traversals cut by the loop budget), BVH "
+                    << bvh_layout_name(layout) << ", "
                     << (bvh.one_level ? "one level, " : "two levels, ")
                     << bvh.nodes.size() + bvh.wide_nodes.size() << " nodes, depth " << bvh.top_depth
                     << " + " << bvh.bottom_depth);
     CHECK(hits > rays.size() / 10);
     CHECK(hit_mismatch <= allowed);
     CHECK(occl_mismatch <= allowed);
-    // ~170 ulp: the object-space ray M^-1 o of an instance adds a few ulp of |M^-1| |o|,
-    // which the scaled instances of these scenes (x0.045 to x4) magnify.
-    CHECK(worst_t < 1e-5);
+    CHECK(gpu.truncated == 0);
+    CHECK(worst_t < kHitPointError);
+    CHECK(bary_mismatch <= allowed);
     CHECK(validation_messages() == 0);
 }
 
