@@ -3,6 +3,7 @@
 #include "bench/result_json.h"
 #include "compare/convergence.h"
 #include "compare/metrics.h"
+#include "render/sampler.h"
 
 #include <fmt/format.h>
 
@@ -17,16 +18,19 @@ std::vector<uint32_t> ladder_counts(uint32_t max_spp) {
     return counts;
 }
 
-LadderRun run_ladder(const FlatScene& scene, const Backend& backend, const Reference& reference,
-                     const BenchOptions& options, const std::function<void(double)>& progress) {
+LadderRun run_ladder(const FlatScene& scene, const Backend& backend, const std::string& sampler,
+                     const Reference& reference, const BenchOptions& options,
+                     const std::function<void(double)>& progress) {
     LadderRun run;
     run.backend = backend;
+    run.sampler = sampler;
     FlatScene s = scene;
     s.spp = options.max_spp;
 
     std::vector<RgbImage> snapshots;
     RenderOptions opt;
     opt.seed = options.seed;
+    opt.sampler = sampler_from_name(sampler);
     opt.threads = options.threads;
     opt.progress = progress;
     opt.checkpoints = ladder_counts(options.max_spp);
@@ -73,6 +77,7 @@ nlohmann::json ladder_json(const LadderRun& run) {
     nlohmann::json j;
     j["backend"] = run.backend.name;
     j["mode"] = run.backend.mode;
+    j["sampler"] = run.sampler;
     j["device"] = run.backend.device;
     j["threads"] = run.threads;
     j["accel_bytes"] = run.accel_bytes;

@@ -33,6 +33,7 @@ struct LadderPoint {
 
 struct LadderRun {
     Backend backend;
+    std::string sampler; // render/sampler.h
     uint32_t threads = 0;
     uint64_t accel_bytes = 0;
     double build_s = 0;
@@ -47,8 +48,9 @@ struct LadderRun {
 // 1, 2, 4, ... up to max_spp (which is included).
 std::vector<uint32_t> ladder_counts(uint32_t max_spp);
 
-LadderRun run_ladder(const FlatScene& scene, const Backend& backend, const Reference& reference,
-                     const BenchOptions& options, const std::function<void(double)>& progress);
+LadderRun run_ladder(const FlatScene& scene, const Backend& backend, const std::string& sampler,
+                     const Reference& reference, const BenchOptions& options,
+                     const std::function<void(double)>& progress);
 
 nlohmann::json ladder_json(const LadderRun& run);
 

@@ -92,7 +92,8 @@ std::string ladder_section(const json& r, const std::string& base) {
               "|---|---|---|---|---|---|---|---|---|---|---|\n";
         double cpu_eff = 0;
         for (const json& run : sc["ladder"])
-            if (run["backend"] == "cpu" && run["points"].back()["efficiency"].is_number())
+            if (run["backend"] == "cpu" && run.value("sampler", "random") == "random" &&
+                run["points"].back()["efficiency"].is_number())
                 cpu_eff = run["points"].back()["efficiency"];
         for (const json& run : sc["ladder"]) {
             const json& p = run["points"].back();

@@ -23,9 +23,10 @@ struct BenchOptions {
     uint32_t spec_spp = 16, spec_rounds = 3; // specialization: spp per render, rounds per variant
     bool pipeline_stats = false; // specialization: the Vulkan driver's pipeline statistics
 
-    std::vector<std::string> scenes;   // catalogue names (scenes.h) or .json/.obj files
-    std::vector<std::string> backends; // cpu, vulkan (every mode), vulkan:compute, ...
-    std::string device;                // Vulkan --device selector
+    std::vector<std::string> scenes;             // catalogue names (scenes.h) or .json/.obj files
+    std::vector<std::string> backends;           // cpu, vulkan (every mode), vulkan:compute, ...
+    std::vector<std::string> samplers{"random"}; // ladder: each backend with each sampler
+    std::string device;                          // Vulkan --device selector
 
     uint32_t width = 256, height = 256;
     std::optional<uint32_t> max_depth; // overrides the scene's

@@ -33,19 +33,21 @@ std::string row(std::initializer_list<json> fields) {
 }
 
 std::string ladder_csv(const json& result) {
-    std::string csv = "scene,backend,mode,device,spp,wall_s,gpu_s,relmse,relmse_excess,mape,"
-                      "efficiency,camera_rays,extension_rays,shadow_rays,camera_mrays_s,"
-                      "extension_mrays_s,shadow_mrays_s,mrays_s\n";
+    std::string csv =
+        "scene,backend,mode,sampler,device,spp,wall_s,gpu_s,relmse,relmse_excess,mape,"
+        "efficiency,camera_rays,extension_rays,shadow_rays,camera_mrays_s,"
+        "extension_mrays_s,shadow_mrays_s,mrays_s\n";
     for (const json& sc : result["scenes"])
         for (const json& run : sc.value("ladder", json::array()))
             for (const json& p : run["points"]) {
                 const double t = p["wall_s"];
-                csv += row(
-                    {sc["name"], run["backend"], run["mode"], run["device"], p["spp"], t,
-                     p["gpu_s"], p["relmse"], p["relmse_excess"], p["mape"], p["efficiency"],
-                     p["rays"]["camera"], p["rays"]["extension"], p["rays"]["shadow"],
-                     mrays_per_s(p["rays"], "camera", t), mrays_per_s(p["rays"], "extension", t),
-                     mrays_per_s(p["rays"], "shadow", t), mrays_per_s(p["rays"], nullptr, t)});
+                csv +=
+                    row({sc["name"], run["backend"], run["mode"], run.value("sampler", "random"),
+                         run["device"], p["spp"], t, p["gpu_s"], p["relmse"], p["relmse_excess"],
+                         p["mape"], p["efficiency"], p["rays"]["camera"], p["rays"]["extension"],
+                         p["rays"]["shadow"], mrays_per_s(p["rays"], "camera", t),
+                         mrays_per_s(p["rays"], "extension", t),
+                         mrays_per_s(p["rays"], "shadow", t), mrays_per_s(p["rays"], nullptr, t)});
             }
     return csv;
 }

@@ -43,7 +43,10 @@ bool has_section(const json& result, const char* name) {
 }
 
 std::string run_label(const json& run) {
-    return run["backend"].get<std::string>() + "/" + run["mode"].get<std::string>();
+    const std::string label =
+        run["backend"].get<std::string>() + "/" + run["mode"].get<std::string>();
+    const std::string sampler = run.value("sampler", "random");
+    return sampler == "random" ? label : label + " " + sampler;
 }
 
 } // namespace tp::bench

@@ -130,17 +130,18 @@ void ladder(BenchRun& run, const std::string& name, const FlatScene& flat, json&
     sj["reference"] = {{"spp", ref.spp}, {"seed", kReferenceSeed}, {"file", ref.file},
                        {"key", ref.key}, {"cached", ref.cached},   {"render_s", ref.render_s}};
     sj["ladder"] = json::array();
-    for (const Backend& b : run.backends) {
-        const std::string what = fmt::format("{} {} ladder", name, b.label());
-        guarded(run, what, [&] {
-            ProgressBar bar(run.next_label(what));
-            const LadderRun lr = run_ladder(flat, b, ref, run.o, bar.callback());
-            sj["ladder"].push_back(ladder_json(lr));
-            const LadderPoint& p = lr.points.back();
-            fmt::print("bench: {}: {} spp in {:.3g} s, relMSE {:.3g}\n", what, p.spp, p.wall_s,
-                       p.excess);
-        });
-    }
+    for (const Backend& b : run.backends)
+        for (const std::string& sampler : run.o.samplers) {
+            const std::string what = fmt::format("{} {} {} ladder", name, b.label(), sampler);
+            guarded(run, what, [&] {
+                ProgressBar bar(run.next_label(what));
+                const LadderRun lr = run_ladder(flat, b, sampler, ref, run.o, bar.callback());
+                sj["ladder"].push_back(ladder_json(lr));
+                const LadderPoint& p = lr.points.back();
+                fmt::print("bench: {}: {} spp in {:.3g} s, relMSE {:.3g}\n", what, p.spp, p.wall_s,
+                           p.excess);
+            });
+        }
 }
 
 void table(BenchRun& run, const std::string& name, const FlatScene& flat, json& sj) {
@@ -299,7 +300,7 @@ int run_bench(const BenchOptions& options) {
         scenes.emplace_back(fs::path(name).stem().string(), std::move(*s));
     }
     if (scenes.empty()) input_error("bench: none of the scenes could be loaded (above)");
-    const int per_scene = (o.ladder ? 1 + int(run.backends.size()) : 0) +
+    const int per_scene = (o.ladder ? 1 + int(run.backends.size() * o.samplers.size()) : 0) +
                           (o.table ? int(run.backends.size()) : 0) + (o.peer ? 1 : 0) +
                           (o.specialization ? int(run.backends.size()) : 0);
     run.steps = per_scene * int(scenes.size());

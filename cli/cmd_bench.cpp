@@ -64,6 +64,12 @@ Subcommand add_bench_command(CLI::App& app) {
                   "(--bvh wide), vulkan:pipeline")
         ->delimiter(',')
         ->capture_default_str();
+    c->add_option("--samplers", o.samplers,
+                  "Ladder: run every backend with each sampler (random, sobol; "
+                  "docs/sampling.md)")
+        ->delimiter(',')
+        ->check(CLI::IsMember({"random", "sobol"}))
+        ->capture_default_str();
     c->add_option("--device", o.device, "Vulkan device index or name substring");
     c->add_option("--width", o.width, "Image width")
         ->check(CLI::Range(1u, 16384u))

@@ -8,6 +8,7 @@
 #include "cpu_ref/cpu_renderer.h"
 #include "image/png_io.h"
 #include "render/render_header.h"
+#include "render/sampler.h"
 #include "scene/flatten.h"
 #include "util/error.h"
 #include "util/interrupt.h"
@@ -125,6 +126,7 @@ int run_render(const RenderArgs& a) {
     opt.stop = &interrupt_flag();
     opt.seed = a.seed;
     opt.sample_offset = a.sample_offset;
+    opt.sampler = sampler_from_name(a.sampler);
     opt.time_limit_s = a.time_limit;
     opt.threads = a.threads;
     opt.all_features = a.features == "all";

@@ -2,6 +2,7 @@
 #include "commands.h"
 #include "scene_args.h"
 
+#include "render/sampler.h"
 #include "view/viewer.h"
 
 namespace tp {
@@ -29,6 +30,7 @@ Subcommand add_view_command(CLI::App& app) {
                 v.vk_mode = parse_vk_mode_request(a->vk_mode);
                 v.threads = a->threads;
                 v.progressive.seed = a->seed;
+                v.progressive.sampler = sampler_from_name(a->sampler);
                 v.progressive.max_spp = scene.spp;
                 return run_view(scene, v);
             }};

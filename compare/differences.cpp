@@ -54,9 +54,11 @@ Differences compute_differences(const RgbImage& a, const RgbImage& b, double rel
     out.width = a.width;
     out.height = a.height;
     const size_t n = a.pixels();
-    // Degrees of freedom of each variance estimate: n - 1 for the unbiased sample variance.
-    // Without twinpath:spp the estimate is taken as exact (normal p-values).
+    // Degrees of freedom of each variance estimate: the header's twinpath:variance_dof (K - 1
+    // for K batch means), else n - 1 for the unbiased sample variance. Without either the
+    // estimate is taken as exact (normal p-values).
     auto inv_dof = [](const RgbImage& img) {
+        if (img.variance_dof) return 1.0 / double(*img.variance_dof);
         return img.spp ? 1.0 / double(std::max<int64_t>(*img.spp - 1, 1)) : 0.0;
     };
     VarianceRule& rule = out.rule;

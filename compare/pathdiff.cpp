@@ -144,7 +144,7 @@ json read_path_log(const std::string& path) {
 
 PathDiffResult pathdiff(const std::string& name_a, const json& a, const std::string& name_b,
                         const json& b, const PathDiffTolerances& tol) {
-    for (const char* key : {"pixel", "seed", "width", "height"})
+    for (const char* key : {"pixel", "seed", "sampler", "width", "height"})
         check_same(name_a, a, name_b, b, key);
     PathDiffResult r;
     std::string header =

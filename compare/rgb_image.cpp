@@ -82,6 +82,11 @@ RgbImage rgb_image_from_exr(const ExrImage& img, const std::string& path) {
         if (it->second < 1) input_error("{}: twinpath:spp is {}, expected >= 1", path, it->second);
         out.spp = it->second;
     }
+    if (auto it = img.integers.find("twinpath:variance_dof"); it != img.integers.end()) {
+        if (it->second < 1)
+            input_error("{}: twinpath:variance_dof is {}, expected >= 1", path, it->second);
+        out.variance_dof = it->second;
+    }
     return out;
 }
 

@@ -20,6 +20,9 @@ struct RgbImage {
     Planes mean;
     Planes var;                 // empty planes when the file has no variance channels
     std::optional<int64_t> spp; // twinpath:spp, when the header has it
+    // twinpath:variance_dof: degrees of freedom of the variance estimate when it is not the
+    // sample variance of spp samples (spp - 1), e.g. K - 1 from K batch means (render/film.h).
+    std::optional<int64_t> variance_dof;
 
     bool has_variance() const { return !var[0].empty(); }
     size_t pixels() const { return size_t(width) * size_t(height); }

@@ -37,8 +37,10 @@ constexpr uint32_t kCpuFixedFeatures = FEATURE_TEXTURES | FEATURE_PHONG_SPECULAR
 // per instance the terms of its hits' error bounds (shared/surface.h), computed once rather
 // than at every hit.
 struct CpuSceneState {
-    CpuSceneState(const FlatScene& s, uint32_t seed) : scene(s), params(s.params) {
+    CpuSceneState(const FlatScene& s, uint32_t seed, uint32_t sampler)
+        : scene(s), params(s.params) {
         params.seed = seed;
+        params.sampler_id = sampler;
         error_terms.reserve(s.instances.size());
         for (const Instance& inst : s.instances) error_terms.push_back(instance_error_terms(inst));
     }

@@ -3,6 +3,7 @@
 #include "cpu_ref/debug_views.h"
 #include "cpu_ref/embree_accel.h"
 #include "cpu_ref/integrator.h"
+#include "render/sampler.h"
 #include "scene/features.h"
 #include "shared/math.h"
 
@@ -47,6 +48,7 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
     st.device = "CPU (Embree 3, TBB)";
     st.scene = scene.name;
     st.seed = options.seed;
+    st.sampler = sampler_name(options.sampler);
     st.threads =
         uint32_t(tbb::global_control::active_value(tbb::global_control::max_allowed_parallelism));
 
@@ -60,13 +62,13 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
     st.scene_features = features.names();
     st.feature_mask = render_feature_mask(scene, options.all_features);
     st.feature_variant = options.all_features ? "all" : "scene";
-    const CpuIntegrator integrator(scene, accel, st.feature_mask, options.seed);
+    const CpuIntegrator integrator(scene, accel, st.feature_mask, options.seed, options.sampler);
 
     const DebugRequest& debug = options.debug;
-    const CpuDebugViews views(scene, accel, debug.integrator, options.seed);
+    const CpuDebugViews views(scene, accel, debug.integrator, options.seed, options.sampler);
     const bool view = debug.integrator != INTEGRATOR_PATH;
 
-    result.film = Film(W, H);
+    result.film = Film(W, H, film_batches(options.sampler));
     st.width = W;
     st.height = H;
     const uint32_t tiles_x = (W + kTile - 1) / kTile, tiles_y = (H + kTile - 1) / kTile;
@@ -97,7 +99,7 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
                                     ++c.nan; // counted and dropped (DESIGN.md, "No silent NaN")
                                     continue;
                                 }
-                                result.film.add_sample(y * W + x, glm::dvec3(L));
+                                result.film.add_sample(y * W + x, glm::dvec3(L), s);
                             }
                 }
             });

@@ -11,7 +11,7 @@ PixelAov CpuDebugViews::primary_aov(const Ray& ray) const {
 
 vec3 CpuDebugViews::radiance(uint32_t x, uint32_t y, uint32_t sample_index) const {
     const RenderParams& P = state_.params;
-    const RngKey key = rng_key(P.seed, y * P.camera.width + x, sample_index);
+    const RngKey key = rng_key(P.sampler_id, P.seed, y * P.camera.width + x, sample_index);
     const Ray ray = camera_ray(P.camera, key, x, y);
     if (integrator_ == INTEGRATOR_COST) {
         const auto t0 = std::chrono::steady_clock::now();

@@ -12,8 +12,8 @@ namespace tp {
 class CpuDebugViews {
   public:
     CpuDebugViews(const FlatScene& scene, const EmbreeAccel& accel, uint32_t integrator,
-                  uint32_t seed)
-        : state_(scene, seed), accel_(accel), integrator_(integrator) {}
+                  uint32_t seed, uint32_t sampler = SAMPLER_RANDOM)
+        : state_(scene, seed, sampler), accel_(accel), integrator_(integrator) {}
 
     // AOVs of the ray's first hit (PixelAov of shared/path_log.h).
     PixelAov primary_aov(const Ray& ray) const;

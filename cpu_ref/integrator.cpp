@@ -28,8 +28,8 @@ std::array<CpuIntegrator::Loop, sizeof...(I)> CpuIntegrator::make_loops(std::ind
 }
 
 CpuIntegrator::CpuIntegrator(const FlatScene& scene, const EmbreeAccel& accel, uint32_t features,
-                             uint32_t seed)
-    : state_(scene, seed), accel_(accel), features_(features) {
+                             uint32_t seed, uint32_t sampler)
+    : state_(scene, seed, sampler), accel_(accel), features_(features) {
     static const std::array<Loop, kFixedCount> loops =
         make_loops(std::make_index_sequence<kFixedCount>{});
     loop_ = loops[0];

@@ -28,9 +28,10 @@ namespace tp {
 class CpuIntegrator {
   public:
     // `features`: the feature mask the path loop is specialized to (shared/features.h); it
-    // must include every feature of the scene (FEATURES_ALL always does). `seed`: the render's.
+    // must include every feature of the scene (FEATURES_ALL always does). `seed`, `sampler`: the
+    // render's (shared/rng.h).
     CpuIntegrator(const FlatScene& scene, const EmbreeAccel& accel, uint32_t features,
-                  uint32_t seed);
+                  uint32_t seed, uint32_t sampler = SAMPLER_RANDOM);
 
     // Radiance estimate of sample `sample_index` of pixel (x, y); rays are counted into `rays`.
     vec3 radiance(uint32_t x, uint32_t y, uint32_t sample_index, RayCounts& rays) const {

@@ -50,10 +50,11 @@ PixelCounts render_pixel(uvec2 pixel) {
     dvec3 sum = dvec3(0.0);
     dvec3 sum_sq = dvec3(0.0);
     uint n = 0u;
-    uint p = pixel.y * params.camera.width + pixel.x;
+    uint slots = accum_slots(params.sampler_id);
+    uint first = (pixel.y * params.camera.width + pixel.x) * slots;
     uint end = batch.sample_begin + batch.sample_count;
     // next_sample is 0 in a fresh accumulator, below a --sample-offset render's first sample.
-    uint s = max(accum[p].next_sample, batch.sample_begin);
+    uint s = max(accum[first].next_sample, batch.sample_begin);
     for (; s < end; ++s) {
         RayCounts rays;
         rays.camera = 0u;
@@ -75,15 +76,22 @@ PixelCounts render_pixel(uvec2 pixel) {
             continue;
         }
         dvec3 d = dvec3(L);
-        sum += d;
-        sum_sq += d * d;
-        ++n;
+        if (slots == 1u) {
+            sum += d;
+            sum_sq += d * d;
+            ++n;
+        } else { // consecutive samples go to different batches: straight to their slot
+            uint a = first + s % slots;
+            accum[a].sum += d;
+            accum[a].sum_sq += d * d;
+            accum[a].count += 1u;
+        }
     }
     c.truncated = s < end ? 1u : 0u;
-    accum[p].sum += sum;
-    accum[p].sum_sq += sum_sq;
-    accum[p].count += n;
-    accum[p].next_sample = s;
+    accum[first].sum += sum;
+    accum[first].sum_sq += sum_sq;
+    accum[first].count += n;
+    accum[first].next_sample = s;
     return c;
 }
 

@@ -40,7 +40,7 @@ void path_log_emit(PathVertex v, uint termination) {
 // A debug view's value for sample `sample_index` of pixel (x, y): the camera ray jittered as
 // the path loop jitters it, so the views are antialiased like the image.
 vec3 debug_view_radiance(uint x, uint y, uint sample_index) {
-    RngKey key = rng_key(params.seed, y * params.camera.width + x, sample_index);
+    RngKey key = rng_key(params.sampler_id, params.seed, y * params.camera.width + x, sample_index);
     Ray ray = camera_ray(params.camera, key, x, y);
 #ifdef TP_TRACE_COUNTS
     g_trace_nodes = 0u;

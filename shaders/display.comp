@@ -25,9 +25,15 @@ void main() {
     uvec2 p = gl_GlobalInvocationID.xy;
     if (p.x >= display.width || p.y >= display.height) return;
     uint i = p.y * display.width + p.x;
-    PixelAccum a = accum[i];
-    // The film's mean, sum / n in double, rounded to float as the EXR stores it.
-    vec3 mean = a.count > 0u ? vec3(a.sum / double(a.count)) : vec3(0.0f);
+    // The film's mean over the pixel's slots, sum / n in double, rounded to float as the EXR
+    // stores it.
+    dvec3 sum = dvec3(0.0);
+    uint count = 0u;
+    for (uint b = 0u; b < display.slots; ++b) {
+        sum += accum[i * display.slots + b].sum;
+        count += accum[i * display.slots + b].count;
+    }
+    vec3 mean = count > 0u ? vec3(sum / double(count)) : vec3(0.0f);
     uvec3 code = uvec3(255u, 0u, 255u); // non-finite: magenta, as in the PNG
     if (!any(isnan(mean)) && !any(isinf(mean)))
         code = uvec3(srgb8_code(mean.r * display.scale), srgb8_code(mean.g * display.scale),

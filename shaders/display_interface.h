@@ -8,13 +8,14 @@
 
 TP_NAMESPACE_BEGIN
 
-const uint DISPLAY_BINDING_ACCUM = 0u;  // PixelAccum[width * height]
+const uint DISPLAY_BINDING_ACCUM = 0u;  // PixelAccum[width * height * slots]
 const uint DISPLAY_BINDING_PIXELS = 1u; // uint[width * height], packed 8-bit pixels
 const uint DISPLAY_BINDING_COUNT = 2u;
 
 struct DisplayParams {
     uint width;
     uint height;
+    uint slots;  // PixelAccum per pixel, consecutive (one per batch of the Sobol sampler)
     uint bgra;   // 1: the swapchain's format is B8G8R8A8, 0: R8G8B8A8
     float scale; // 2^exposure
 };

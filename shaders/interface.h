@@ -7,6 +7,7 @@
 #define TP_SHADERS_INTERFACE_H
 
 #include "shared/lang.h"
+#include "shared/rng.h"
 
 TP_NAMESPACE_BEGIN
 
@@ -63,13 +64,19 @@ const uint LOOP_PROBE_ITERATIONS = 2u;
 // ---- accumulation ----------------------------------------------------------------------------
 // Per pixel, in double precision: the sum and the sum of squares of its finite samples and how
 // many there were, and the index of the next sample to trace. The host merges them into the
-// Film with Film::add_batch (Chan et al.).
+// Film with Film::add_batch (Chan et al.). With the Sobol sampler a pixel has one PixelAccum
+// per batch (sample s in slot s mod SOBOL_BATCHES, pixel-major), for the batch estimator of the
+// variance (render/film.h); next_sample lives in the pixel's first slot.
 struct PixelAccum {
     dvec3 sum;
     dvec3 sum_sq;
     uint count;
     uint next_sample;
 };
+
+inline uint accum_slots(uint sampler_id) {
+    return sampler_id == SAMPLER_SOBOL ? SOBOL_BATCHES : 1u;
+}
 
 // Ray and sample counters, each a 64-bit value as (low, high) 32-bit words so that any Vulkan
 // device can add to them with 32-bit atomics and an explicit carry. COUNTER_TRUNCATED counts

@@ -40,40 +40,44 @@ std::optional<CpuJobOutcome> CpuJob::poll() {
 }
 
 std::unique_ptr<CpuJob> CpuJob::live_compare(FlatScene scene, RenderResult gpu, uint32_t seed,
-                                             uint32_t threads) {
+                                             uint32_t sampler, uint32_t threads) {
     auto job = std::make_unique<CpuJob>();
     std::atomic<double>* progress = &job->progress_;
-    job->result_ = std::async(std::launch::async, [=, scene = std::move(scene),
-                                                   gpu = std::move(gpu)]() mutable {
-        scene.spp = std::max(1u, gpu.stats.spp);
-        RenderOptions opt;
-        opt.seed = seed ^ kIndependentSeed;
-        opt.threads = threads;
-        opt.progress = [progress](double f) { progress->store(f); };
-        RenderResult cpu = render_cpu(scene, opt);
-        const RgbImage a = rgb_image_from_exr(render_exr(gpu, scene, RenderOptions{}), "window");
-        const RgbImage b = rgb_image_from_exr(render_exr(cpu, scene, opt), "CPU reference");
-        const CompareResult r = compare_images(a, b, CompareOptions{});
-        CpuJobOutcome out;
-        out.lines.push_back(fmt::format("compare, {} spp each: {} (p = {:.3g}, alpha {})",
-                                        scene.spp, r.different ? "DIFFERENT" : "consistent",
-                                        r.p_value, r.alpha));
-        out.lines.push_back(fmt::format("significant pixels: {} of {}; Esc leaves the map",
-                                        r.local.significant_pixels, a.pixels()));
-        out.picture_rgb = significance_map(r);
-        return out;
-    });
+    job->result_ = std::async(
+        std::launch::async, [=, scene = std::move(scene), gpu = std::move(gpu)]() mutable {
+            scene.spp = std::max(1u, gpu.stats.spp);
+            RenderOptions opt;
+            opt.seed = seed ^ kIndependentSeed;
+            opt.sampler = sampler;
+            opt.threads = threads;
+            opt.progress = [progress](double f) { progress->store(f); };
+            RenderResult cpu = render_cpu(scene, opt);
+            RenderOptions gpu_opt;
+            gpu_opt.sampler = sampler;
+            const RgbImage a = rgb_image_from_exr(render_exr(gpu, scene, gpu_opt), "window");
+            const RgbImage b = rgb_image_from_exr(render_exr(cpu, scene, opt), "CPU reference");
+            const CompareResult r = compare_images(a, b, CompareOptions{});
+            CpuJobOutcome out;
+            out.lines.push_back(fmt::format("compare, {} spp each: {} (p = {:.3g}, alpha {})",
+                                            scene.spp, r.different ? "DIFFERENT" : "consistent",
+                                            r.p_value, r.alpha));
+            out.lines.push_back(fmt::format("significant pixels: {} of {}; Esc leaves the map",
+                                            r.local.significant_pixels, a.pixels()));
+            out.picture_rgb = significance_map(r);
+            return out;
+        });
     return job;
 }
 
 std::unique_ptr<CpuJob> CpuJob::pathdiff(FlatScene scene, uint32_t x, uint32_t y, uint32_t seed,
-                                         uint32_t threads, VulkanOptions vk, std::string scene_path,
-                                         std::string log_prefix) {
+                                         uint32_t sampler, uint32_t threads, VulkanOptions vk,
+                                         std::string scene_path, std::string log_prefix) {
     auto job = std::make_unique<CpuJob>();
     job->result_ = std::async(std::launch::async, [=, scene = std::move(scene)]() mutable {
         scene.spp = 1;
         RenderOptions opt;
         opt.seed = seed;
+        opt.sampler = sampler;
         opt.threads = threads;
         opt.debug.log = true;
         opt.debug.pixel_x = x;

@@ -25,15 +25,16 @@ struct CpuJobOutcome {
 class CpuJob {
   public:
     // Renders `scene` (the window's camera in its params) on the CPU with as many samples as
-    // `gpu` has, with a different seed so that the two estimates are independent (the
-    // two-sample test's assumption, docs/compare.md), compares, and writes nothing.
+    // `gpu` has and the same sampler (SAMPLER_*), with a different seed so that the two
+    // estimates are independent (the two-sample test's assumption, docs/compare.md), compares,
+    // and writes nothing.
     static std::unique_ptr<CpuJob> live_compare(FlatScene scene, RenderResult gpu, uint32_t seed,
-                                                uint32_t threads);
+                                                uint32_t sampler, uint32_t threads);
     // Renders pixel (x, y) sample 0 with path logs on both engines (the GPU through
     // render_vulkan on `vk`, a device of its own), writes them to `log_prefix`_gpu.json and
     // _cpu.json and runs pathdiff on them.
     static std::unique_ptr<CpuJob> pathdiff(FlatScene scene, uint32_t x, uint32_t y, uint32_t seed,
-                                            uint32_t threads, VulkanOptions vk,
+                                            uint32_t sampler, uint32_t threads, VulkanOptions vk,
                                             std::string scene_path, std::string log_prefix);
 
     double progress() const { return progress_.load(); }

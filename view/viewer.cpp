@@ -2,6 +2,7 @@
 
 #include "image/png_io.h"
 #include "render/render_header.h"
+#include "render/sampler.h"
 #include "scene/features.h"
 #include "shaders/display_interface.h"
 #include "util/error.h"
@@ -193,10 +194,11 @@ class Viewer {
             camera_.fly(0, kFlyStep, 0);
             return false;
         case 'P':
-            fmt::print("twinpath render {} --backend vulkan --vk-mode {} --seed {} --width {} "
-                       "--height {} --max-depth {} --min-depth {} --spp {} {}\n",
-                       o_.scene_path, vk_mode_name(renderer_.mode()), o_.progressive.seed, width_,
-                       height_, scene_.params.max_depth, scene_.params.min_depth,
+            fmt::print("twinpath render {} --backend vulkan --vk-mode {} --seed {} --sampler {} "
+                       "--width {} --height {} --max-depth {} --min-depth {} --spp {} {}\n",
+                       o_.scene_path, vk_mode_name(renderer_.mode()), o_.progressive.seed,
+                       sampler_name(o_.progressive.sampler), width_, height_,
+                       scene_.params.max_depth, scene_.params.min_depth,
                        std::max(1u, renderer_.spp()), camera_.render_flags());
             std::fflush(stdout);
             break;
@@ -233,7 +235,9 @@ class Viewer {
         const std::string base = free_name(stem(o_.scene_path) + "_view");
         RenderResult r = renderer_.result();
         r.stats.scene = o_.scene_path;
-        write_exr(base + ".exr", render_exr(r, current_scene(), RenderOptions{}));
+        RenderOptions opt;
+        opt.sampler = o_.progressive.sampler;
+        write_exr(base + ".exr", render_exr(r, current_scene(), opt));
         const ExrImage img = r.film.to_exr();
         write_png(base + ".png", int(img.width), int(img.height),
                   tonemap_srgb8(img.channel("R"), img.channel("G"), img.channel("B"), 0.0f));
@@ -246,8 +250,9 @@ class Viewer {
             return status({fmt::format("C compares from {} spp on; the window has {}",
                                        kMinCompareSpp, renderer_.spp())});
         compare_view_id_ = view_id_;
-        compare_job_ = CpuJob::live_compare(current_scene(), renderer_.result(),
-                                            o_.progressive.seed, o_.threads);
+        compare_job_ =
+            CpuJob::live_compare(current_scene(), renderer_.result(), o_.progressive.seed,
+                                 o_.progressive.sampler, o_.threads);
     }
 
     void start_pathdiff(double x, double y) {
@@ -260,7 +265,7 @@ class Viewer {
             fmt::format("{}_pixel_{}_{}", stem(o_.scene_path), uint32_t(x), uint32_t(y));
         pathdiff_job_ =
             CpuJob::pathdiff(current_scene(), uint32_t(x), uint32_t(y), o_.progressive.seed,
-                             o_.threads, vk, o_.scene_path, prefix);
+                             o_.progressive.sampler, o_.threads, vk, o_.scene_path, prefix);
     }
 
     void poll_jobs() {

@@ -1,5 +1,6 @@
 #include "vulkan_rt/batch_session.h"
 
+#include "render/sampler.h"
 #include "util/error.h"
 #include "vulkan_rt/barriers.h"
 
@@ -16,10 +17,12 @@ constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
 } // namespace
 
 BatchSession::BatchSession(const VulkanContext& ctx, const FlatScene& scene, const SceneBuffers& sb,
-                           Tracer& tracer, const DebugRequest& debug, uint32_t sample_offset)
+                           Tracer& tracer, const DebugRequest& debug, uint32_t sample_offset,
+                           uint32_t sampler)
     : ctx_(ctx), tracer_(tracer), sample_offset_(sample_offset), width_(scene.params.camera.width),
-      height_(scene.params.camera.height),
-      accum_(ctx, VkDeviceSize(width_) * height_ * sizeof(PixelAccum), kStorage, false),
+      height_(scene.params.camera.height), batches_(film_batches(sampler)),
+      slots_(accum_slots(sampler)),
+      accum_(ctx, VkDeviceSize(width_) * height_ * slots_ * sizeof(PixelAccum), kStorage, false),
       counters_(ctx, kCounterBytes, kStorage, false),
       host_counters_(ctx, kCounterBytes, VK_BUFFER_USAGE_TRANSFER_DST_BIT, true),
       debug_capacity_(debug_capacity(scene, debug, sample_offset)),
@@ -125,12 +128,14 @@ Film BatchSession::read_back(RenderStats& st) const {
         vkCmdCopyBuffer(cmd, accum_.handle(), host.handle(), 1, &region);
         record_host_read_barrier(cmd);
     });
-    const auto* pixels = static_cast<const PixelAccum*>(host.mapped());
-    Film film(width_, height_);
-    for (uint32_t p = 0; p < width_ * height_; ++p) {
-        film.add_batch(p, pixels[p].count, pixels[p].sum, pixels[p].sum_sq);
-        st.samples += pixels[p].count;
-    }
+    const auto* slots = static_cast<const PixelAccum*>(host.mapped());
+    Film film(width_, height_, batches_);
+    for (uint32_t p = 0; p < width_ * height_; ++p)
+        for (uint32_t b = 0; b < slots_; ++b) {
+            const PixelAccum& a = slots[size_t(p) * slots_ + b];
+            film.add_batch(p, a.count, a.sum, a.sum_sq, b);
+            st.samples += a.count;
+        }
     // The counters came back with the last launch.
     st.rays.camera = counter(COUNTER_CAMERA);
     st.rays.extension = counter(COUNTER_EXTENSION);

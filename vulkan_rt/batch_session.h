@@ -22,12 +22,16 @@ class BatchSession {
   public:
     // `sample_offset`: the first sample of the range that batches' sample_begin counts from.
     BatchSession(const VulkanContext& ctx, const FlatScene& scene, const SceneBuffers& sb,
-                 Tracer& tracer, const DebugRequest& debug, uint32_t sample_offset);
+                 Tracer& tracer, const DebugRequest& debug, uint32_t sample_offset,
+                 uint32_t sampler);
 
     double gpu_seconds() const { return timer_.active() ? gpu_seconds_ : -1.0; }
     uint32_t submissions() const { return submissions_; }
     uint32_t repeats() const { return repeats_; }
-    const Buffer& accumulators() const { return accum_; } // PixelAccum[width * height]
+    // PixelAccum[width * height * slots()]: a pixel's slots are consecutive, one per film batch
+    // (render/sampler.h).
+    const Buffer& accumulators() const { return accum_; }
+    uint32_t slots() const { return slots_; }
 
     // The first sample of the range that the batches' sample_begin counts from.
     void set_sample_offset(uint32_t first) { sample_offset_ = first; }
@@ -66,6 +70,8 @@ class BatchSession {
     Tracer& tracer_;
     uint32_t sample_offset_;
     uint32_t width_, height_;
+    uint32_t batches_; // film batches (render/sampler.h)
+    uint32_t slots_;   // accumulator slots per pixel: one per batch, at least one
     Buffer accum_, counters_, host_counters_;
     uint32_t debug_capacity_;
     Buffer debug_, aov_;

@@ -115,7 +115,7 @@ ModeSetup prepare_compute(const VulkanContext& ctx, const FlatScene& scene,
     m.accel.extra["bvh_levels"] = bvh.one_level ? "1" : "2";
     m.accel.extra["bvh_layout"] = bvh_layout_name(layout);
     m.buffers =
-        upload_scene(ctx, scene, seeded_params(scene, options.seed), bvh.mesh_roots, 0, features);
+        upload_scene(ctx, scene, seeded_params(scene, options), bvh.mesh_roots, 0, features);
     auto tracer = std::make_unique<ComputeTracer>(
         ctx, bvh, options.debug.active() || debug_spirv_overridden(), features);
     add_cache_stats(tracer->cache_use(), m.accel.extra);

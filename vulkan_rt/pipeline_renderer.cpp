@@ -77,7 +77,7 @@ ModeSetup prepare_pipeline(const VulkanContext& ctx, const FlatScene& scene,
                     "counts; docs/debugging.md)");
     auto rt = std::make_unique<RtFunctions>(ctx.device());
     ModeSetup m;
-    m.buffers = upload_scene(ctx, scene, seeded_params(scene, options.seed), {}, kAccelInputUsage,
+    m.buffers = upload_scene(ctx, scene, seeded_params(scene, options), {}, kAccelInputUsage,
                              render_feature_mask(scene, options.all_features));
     const auto t_build = std::chrono::steady_clock::now();
     auto as = std::make_unique<AccelStructures>(ctx, *rt, scene, m.buffers);

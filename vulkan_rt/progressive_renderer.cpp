@@ -1,5 +1,6 @@
 #include "vulkan_rt/progressive_renderer.h"
 
+#include "render/sampler.h"
 #include "scene/features.h"
 #include "shaders/display_interface.h"
 #include "vulkan_rt/barriers.h"
@@ -14,10 +15,16 @@
 namespace tp {
 namespace {
 
-ModeSetup prepare(const VulkanContext& ctx, const FlatScene& scene, const ProgressiveOptions& o) {
+RenderOptions render_options(const ProgressiveOptions& o) {
     RenderOptions options;
     options.seed = o.seed;
+    options.sampler = o.sampler;
     options.all_features = o.all_features;
+    return options;
+}
+
+ModeSetup prepare(const VulkanContext& ctx, const FlatScene& scene, const ProgressiveOptions& o) {
+    const RenderOptions options = render_options(o);
     return ctx.mode() == VkMode::pipeline ? prepare_pipeline(ctx, scene, options)
                                           : prepare_compute(ctx, scene, options, o.bvh);
 }
@@ -30,10 +37,10 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 ProgressiveRenderer::ProgressiveRenderer(const VulkanContext& ctx, const FlatScene& scene,
                                          const ProgressiveOptions& options)
-    : ctx_(ctx), scene_(scene), options_(options), params_(seeded_params(scene, options.seed)),
-      mode_(prepare(ctx, scene, options)),
+    : ctx_(ctx), scene_(scene), options_(options),
+      params_(seeded_params(scene, render_options(options))), mode_(prepare(ctx, scene, options)),
       session_(std::make_unique<BatchSession>(ctx, scene, mode_.buffers, *mode_.tracer,
-                                              DebugRequest{}, 0)),
+                                              DebugRequest{}, 0, options.sampler)),
       pixels_(ctx,
               VkDeviceSize(scene.params.camera.width) * scene.params.camera.height *
                   sizeof(uint32_t),
@@ -86,8 +93,8 @@ uint64_t ProgressiveRenderer::rays() const {
 
 void ProgressiveRenderer::update_display(bool bgra, float exposure_stops) {
     bgra_ = bgra;
-    const DisplayParams push{params_.camera.width, params_.camera.height, bgra ? 1u : 0u,
-                             std::exp2(exposure_stops)};
+    const DisplayParams push{params_.camera.width, params_.camera.height, session_->slots(),
+                             bgra ? 1u : 0u, std::exp2(exposure_stops)};
     ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
         record_shader_barrier(cmd, mode_.tracer->shader_stage());
         display_.record_dispatch(cmd, &push, (push.width + 7) / 8, (push.height + 7) / 8, 1);
@@ -118,6 +125,7 @@ RenderResult ProgressiveRenderer::result() const {
     st.device = ctx_.info().name;
     st.scene = scene_.name;
     st.seed = options_.seed;
+    st.sampler = sampler_name(options_.sampler);
     st.width = params_.camera.width;
     st.height = params_.camera.height;
     st.spp = spp();

@@ -24,6 +24,7 @@ namespace tp {
 
 struct ProgressiveOptions {
     uint32_t seed = 0;
+    uint32_t sampler = 0; // SAMPLER_* (shared/rng.h, render/sampler.h)
     bool all_features = false;
     uint32_t max_spp = 1u << 30; // accumulation stops here
     // Samples per pixel in every frame; 0: adapt so that a frame takes about target_seconds.

@@ -1,5 +1,6 @@
 #include "vulkan_rt/render_loop.h"
 
+#include "render/sampler.h"
 #include "util/error.h"
 #include "vulkan_rt/batch_session.h"
 
@@ -21,9 +22,10 @@ double seconds_since(std::chrono::steady_clock::time_point t0) {
 
 } // namespace
 
-RenderParams seeded_params(const FlatScene& scene, uint32_t seed) {
+RenderParams seeded_params(const FlatScene& scene, const RenderOptions& options) {
     RenderParams p = scene.params;
-    p.seed = seed;
+    p.seed = options.seed;
+    p.sampler_id = options.sampler;
     return p;
 }
 
@@ -38,6 +40,7 @@ RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
     st.device = ctx.info().name;
     st.scene = scene.name;
     st.seed = options.seed;
+    st.sampler = sampler_name(options.sampler);
     st.width = scene.params.camera.width;
     st.height = scene.params.camera.height;
     st.build_time_s = accel.build_time_s;
@@ -45,7 +48,8 @@ RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
     for (const auto& [key, value] : accel.extra) st.extra[key] = value;
     st.pipeline = accel.pipeline;
 
-    BatchSession session(ctx, scene, mode.buffers, tracer, options.debug, options.sample_offset);
+    BatchSession session(ctx, scene, mode.buffers, tracer, options.debug, options.sample_offset,
+                         options.sampler);
     const auto t0 = std::chrono::steady_clock::now();
     double snapshot_seconds = 0; // read-backs for checkpoints: not rendering time
     uint64_t work = BatchPlanner::kInitialWork;

@@ -54,7 +54,7 @@ struct AccelStats {
 };
 
 // The scene's RenderParams with the render's seed (uploaded to BINDING_PARAMS).
-RenderParams seeded_params(const FlatScene& scene, uint32_t seed);
+RenderParams seeded_params(const FlatScene& scene, const RenderOptions& options);
 
 // What a mode builds before its first batch (prepare_compute, prepare_pipeline): the scene on
 // the device, the tracer over the mode's acceleration structure, and what building them cost.

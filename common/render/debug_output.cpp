@@ -208,6 +208,7 @@ void write_path_log(const std::string& path, const PathLogInfo& info,
     j["device"] = info.device;
     j["scene"] = info.scene;
     j["seed"] = info.seed;
+    j["sampler"] = info.sampler;
     j["width"] = info.width;
     j["height"] = info.height;
     j["spp"] = info.spp;

@@ -51,6 +51,7 @@ const char* integrator_name(uint32_t integrator);
 struct PathLogInfo {
     std::string backend, mode, device, scene;
     uint32_t seed = 0, width = 0, height = 0, spp = 0, max_depth = 0, min_depth = 0;
+    std::string sampler; // render/sampler.h
     uint32_t pixel_x = 0, pixel_y = 0;
     uint64_t dropped = 0;
     // FlatScene::origin, the camera's eye: the engines, and the log, record positions relative to

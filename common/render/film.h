@@ -2,6 +2,19 @@
 // squared deviations (Welford 1962), so that mean and variance keep full precision at 10^6
 // samples. Batches from another accumulator (the GPU's per-pixel sums) merge with the
 // pairwise update of Chan, Golub & LeVeque (1979).
+//
+// The variance of the mean comes from one of two estimators (docs/sampling.md):
+// - samples: the unbiased sample variance over n, n - 1 degrees of freedom; valid when a
+//   pixel's samples are independent (the random sampler).
+// - batches: sample s goes to batch s mod K, each batch an independent randomization of a
+//   low-discrepancy sequence (the Sobol sampler, shared/rng.h). Within a batch the samples are
+//   not independent, so their spread says nothing about the error of their mean; the batch
+//   means are independent, and the random-group estimator (Wolter, "Introduction to Variance
+//   Estimation", 2nd ed., 2007, ch. 2) with batch sizes n_b, N = sum n_b over the K' batches
+//   that have samples,
+//       Var(mean) = K' / (K' - 1) * sum_b (n_b / N)^2 (mean_b - mean)^2,
+//   is the sample variance of the batch means over K' when the n_b are equal, with K' - 1
+//   degrees of freedom.
 #pragma once
 
 #include "image/exr_io.h"
@@ -15,16 +28,21 @@ namespace tp {
 class Film {
   public:
     Film() = default;
-    Film(uint32_t width, uint32_t height);
+    // batches = 0: the samples estimator; K > 0: the batch estimator with K batches.
+    Film(uint32_t width, uint32_t height, uint32_t batches = 0);
 
     uint32_t width() const { return width_; }
     uint32_t height() const { return height_; }
+    uint32_t batches() const { return batches_; }
 
-    // One sample of pixel p. Pixels are independent, so threads may add to different pixels.
-    void add_sample(uint32_t p, const glm::dvec3& value);
+    // Sample `sample_index` of pixel p. Pixels are independent, so threads may add to
+    // different pixels.
+    void add_sample(uint32_t p, const glm::dvec3& value, uint32_t sample_index = 0);
 
-    // n samples of pixel p with the given sum and sum of squares per channel.
-    void add_batch(uint32_t p, uint64_t n, const glm::dvec3& sum, const glm::dvec3& sum_sq);
+    // n samples of pixel p with the given sum and sum of squares per channel, all of them in
+    // batch `batch` (read only by the batch estimator).
+    void add_batch(uint32_t p, uint64_t n, const glm::dvec3& sum, const glm::dvec3& sum_sq,
+                   uint32_t batch = 0);
 
     // Every pixel of another film of the same size (its samples are added to this one's), by
     // the same pairwise update.
@@ -32,17 +50,29 @@ class Film {
 
     uint64_t count(uint32_t p) const { return count_[p]; }
     glm::dvec3 mean(uint32_t p) const { return mean_[p]; }
-    // Variance of the mean: the unbiased sample variance divided by n; 0 below 2 samples.
+    // Variance of the mean by the film's estimator; 0 below 2 samples (2 filled batches).
     glm::dvec3 variance_of_mean(uint32_t p) const;
+    // Degrees of freedom of that estimate over the image: the smallest n - 1 (K' - 1) of the
+    // pixels that have an estimate, 0 when none has.
+    uint64_t variance_dof() const;
 
-    // R, G, B and variance.R/G/B channels, float32 (DESIGN.md, "Image output").
+    // R, G, B and variance.R/G/B channels, float32 (DESIGN.md, "Image output"), the estimator
+    // in twinpath:variance_estimator ("samples" or "batches") and, for batches,
+    // twinpath:variance_dof.
     ExrImage to_exr() const;
 
   private:
-    uint32_t width_ = 0, height_ = 0;
+    struct BatchSum {
+        glm::dvec3 sum{0.0};
+        uint64_t count = 0;
+    };
+    uint64_t pixel_dof(uint32_t p) const;
+
+    uint32_t width_ = 0, height_ = 0, batches_ = 0;
     std::vector<uint64_t> count_;
     std::vector<glm::dvec3> mean_;
     std::vector<glm::dvec3> m2_;
+    std::vector<BatchSum> batch_; // width * height * batches, pixel-major
 };
 
 } // namespace tp

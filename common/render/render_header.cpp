@@ -1,5 +1,6 @@
 #include "render/render_header.h"
 
+#include "render/sampler.h"
 #include "scene/scene_hash.h"
 #include "util/error.h"
 
@@ -77,8 +78,11 @@ ExrImage render_exr(const RenderResult& r, const FlatScene& scene, const RenderO
     img.strings[h::kScene] = s.scene;
     img.strings[h::kSceneHash] = scene_hash(scene);
     img.strings[h::kCamera] = camera_description(scene);
-    img.strings[h::kSettings] = settings_description(scene, options.debug);
-    img.strings[h::kVarianceEstimator] = kVarianceFromSamples;
+    // The sampler changes what a sample estimates jointly with its neighbours: parts of
+    // different samplers are not parts of one render. The film wrote the variance estimator.
+    img.strings[h::kSettings] =
+        settings_description(scene, options.debug) + " sampler " + sampler_name(options.sampler);
+    img.strings[h::kSampler] = sampler_name(options.sampler);
     img.reals[h::kRenderTime] = s.wall_time_s;
     if (options.debug.integrator != INTEGRATOR_PATH)
         img.strings[h::kIntegrator] = integrator_name(options.debug.integrator);
@@ -94,6 +98,7 @@ PathLogInfo path_log_info(const RenderResult& result, const FlatScene& scene,
     info.device = result.stats.device;
     info.scene = scene_path;
     info.seed = result.stats.seed;
+    info.sampler = result.stats.sampler;
     info.width = scene.params.camera.width;
     info.height = scene.params.camera.height;
     info.spp = result.stats.spp;

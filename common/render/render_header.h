@@ -23,15 +23,17 @@ constexpr const char* kScene = "twinpath:scene";          // the scene's path
 constexpr const char* kSceneHash = "twinpath:scene_hash"; // scene_hash() of the FlatScene
 constexpr const char* kCamera = "twinpath:camera";        // camera_description()
 constexpr const char* kSettings = "twinpath:settings";    // settings_description()
-constexpr const char* kVarianceEstimator = "twinpath:variance_estimator";
+constexpr const char* kSampler = "twinpath:sampler";      // random, sobol
+constexpr const char* kVarianceEstimator = "twinpath:variance_estimator"; // Film::to_exr
 constexpr const char* kRenderTime = "twinpath:render_time_s"; // double; merged: the parts' sum
 constexpr const char* kParts = "twinpath:parts";              // merge: one line per part
 constexpr const char* kIntegrator = "twinpath:integrator";    // debug views only
 } // namespace header
 
-// How variance.R/G/B was estimated. "samples": the unbiased sample variance of the pixel's
-// samples divided by their count, valid because the samples of a pixel are independent
-// (shared/rng.h hashes every (seed, pixel, sample, dimension) separately).
+// How variance.R/G/B was estimated (render/film.h). "samples": the unbiased sample variance of
+// the pixel's samples divided by their count, valid when the samples of a pixel are independent
+// (the random sampler, shared/rng.h); "batches" (the Sobol sampler): from the means of
+// independent batches, with twinpath:variance_dof degrees of freedom.
 constexpr const char* kVarianceFromSamples = "samples";
 
 // "SEED:BEGIN-END" entries joined by ",", sorted by seed then begin, with touching ranges of one

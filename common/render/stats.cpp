@@ -83,6 +83,7 @@ void write_stats_json(const std::string& path, const RenderStats& s) {
     j["height"] = s.height;
     j["spp"] = s.spp;
     j["seed"] = s.seed;
+    j["sampler"] = s.sampler;
     j["threads"] = s.threads;
     j["wall_time_s"] = s.wall_time_s;
     j["build_time_s"] = s.build_time_s;

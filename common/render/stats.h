@@ -89,6 +89,7 @@ struct RenderStats {
     uint32_t width = 0, height = 0;
     uint32_t spp = 0; // samples per pixel completed
     uint32_t seed = 0;
+    std::string sampler; // render/sampler.h
     uint32_t threads = 0;
     double wall_time_s = 0;  // rendering only, scene loading and acceleration build excluded
     double build_time_s = 0; // acceleration structure build

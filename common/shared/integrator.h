@@ -33,7 +33,7 @@
 
 // Radiance estimate of sample `sample_index` of pixel (x, y); rays are counted into `rays`.
 vec3 path_radiance(uint x, uint y, uint sample_index, INOUT(RayCounts) rays) {
-    RngKey key = rng_key(params.seed, y * params.camera.width + x, sample_index);
+    RngKey key = rng_key(params.sampler_id, params.seed, y * params.camera.width + x, sample_index);
 
     Ray ray = camera_ray(params.camera, key, x, y);
     ++rays.camera;

@@ -13,6 +13,7 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
+#include <glm/integer.hpp>
 
 namespace tp {
 using vec2 = glm::vec2;
@@ -29,6 +30,7 @@ using uint = std::uint32_t;
 using glm::abs;
 using glm::acos;
 using glm::atan;
+using glm::bitfieldReverse;
 using glm::clamp;
 using glm::cos;
 using glm::cross;

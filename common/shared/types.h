@@ -112,6 +112,10 @@ struct RenderParams {
     int env_texture;       // lat-long radiance map, or NO_TEXTURE for a constant environment
     uint env_alias_offset; // first entry of the map's pixel alias table
     float env_rotation;    // rotation of the map about +Y (radians)
+    uint sampler_id;       // SAMPLER_* (rng.h)
+    uint pad0;
+    uint pad1;
+    uint pad2;
 };
 
 #ifdef __cplusplus
@@ -122,7 +126,7 @@ static_assert(sizeof(MeshInfo) == 32, "MeshInfo layout");
 static_assert(sizeof(Instance) == 112 && offsetof(Instance, mesh) == 96, "Instance layout");
 static_assert(sizeof(TextureInfo) == 16, "TextureInfo layout");
 static_assert(sizeof(Camera) == 64 && offsetof(Camera, height) == 60, "Camera layout");
-static_assert(sizeof(RenderParams) == 96 && offsetof(RenderParams, env_rotation) == 92,
+static_assert(sizeof(RenderParams) == 112 && offsetof(RenderParams, sampler_id) == 96,
               "RenderParams layout");
 #endif
 

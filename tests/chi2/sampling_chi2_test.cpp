@@ -77,7 +77,7 @@ TEST_CASE("rng.h numbers of two dimensions are jointly uniform", "[chi2]") {
     PointSamples s;
     for (uint32_t pixel = 0; pixel < 1000; ++pixel)
         for (uint32_t sample = 0; sample < 1000; ++sample) {
-            const tp::RngKey key = tp::rng_key(7u, pixel, sample);
+            const tp::RngKey key = tp::rng_key(tp::SAMPLER_RANDOM, 7u, pixel, sample);
             s.points.emplace_back(tp::rng_bounce(key, 3u, tp::RNG_DIR_U),
                                   tp::rng_bounce(key, 3u, tp::RNG_DIR_V));
         }

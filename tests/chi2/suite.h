@@ -20,6 +20,7 @@ namespace tp::test::chi2 {
 //   bsdf_chi2_test.cpp       Phong mixture 8, dielectric choice 6
 //   lights_chi2_test.cpp     triangle light 1, environment map 1
 //   discrete_chi2_test.cpp   alias tables 2
+// sobol_chi2_test.cpp tests the Sobol sampler's uniformity as a family of its own.
 // The deliberately wrong pairs in power_chi2_test.cpp must be rejected at the same level; they
 // are not part of the family (a rejection there is the expected outcome).
 constexpr int kFamilySize = 28;

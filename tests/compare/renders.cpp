@@ -27,6 +27,7 @@ ExrImage render_exr(const RenderSpec& spec) {
     apply_overrides(scene, o);
     RenderOptions opt;
     opt.seed = spec.seed;
+    opt.sampler = spec.sampler;
     opt.threads = spec.threads;
     const RenderResult r = render_cpu(flatten(scene), opt);
     ExrImage img = r.film.to_exr();

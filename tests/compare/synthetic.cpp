@@ -3,27 +3,32 @@
 #include "image/exr_io.h"
 #include "render/film.h"
 
+#include <boost/math/distributions/normal.hpp>
+
+#include <algorithm>
 #include <cmath>
 #include <random>
 
 namespace tp::test {
 namespace {
 
-// `q`: the pixel's caustic probability (Noise::Caustic only).
-double draw(Noise noise, double q, std::mt19937_64& rng) {
+// `q`: the pixel's caustic probability (Noise::Caustic only); `u` in [0, 1): the uniform
+// that drives the distribution (the quantile, or the coin of the rare sample).
+double draw(Noise noise, double q, double u, std::mt19937_64& rng) {
     std::normal_distribution<double> normal;
-    std::uniform_real_distribution<double> uniform;
+    const boost::math::normal standard;
+    const double open_u = std::max(u, 0x1p-60); // the normal quantile is -inf at 0
     switch (noise) {
     case Noise::Gaussian:
-        return 1.0 + 0.5 * normal(rng);
+        return 1.0 + 0.5 * boost::math::quantile(standard, open_u);
     case Noise::Lognormal:
-        return std::exp(normal(rng) - 0.5);
+        return std::exp(boost::math::quantile(standard, open_u) - 0.5);
     case Noise::Pareto:
-        return 0.6 * std::pow(1.0 - uniform(rng), -1.0 / 2.5);
+        return 0.6 * std::pow(1.0 - u, -1.0 / 2.5);
     case Noise::Firefly:
-        return 0.5 * (1.0 + 0.3 * normal(rng)) + (uniform(rng) < 0.01 ? 50.0 : 0.0);
+        return 0.5 * (1.0 + 0.3 * normal(rng)) + (u < 0.01 ? 50.0 : 0.0);
     case Noise::Caustic:
-        return 0.5 * (1.0 + 0.3 * normal(rng)) + (uniform(rng) < q ? 0.5 / q : 0.0);
+        return 0.5 * (1.0 + 0.3 * normal(rng)) + (u < q ? 0.5 / q : 0.0);
     }
     return 0.0;
 }
@@ -45,7 +50,8 @@ double true_mean(const SyntheticSpec& s, int channel, int x, int y) {
 
 RgbImage synthetic_render(const SyntheticSpec& s, uint64_t seed, const Bias& bias) {
     std::mt19937_64 rng(seed);
-    Film film(uint32_t(s.width), uint32_t(s.height));
+    std::uniform_real_distribution<double> uniform;
+    Film film(uint32_t(s.width), uint32_t(s.height), s.batches);
     for (int y = 0; y < s.height; ++y)
         for (int x = 0; x < s.width; ++x) {
             const bool in = x >= bias.x0 && x < bias.x1 && y >= bias.y0 && y < bias.y1;
@@ -54,12 +60,19 @@ RgbImage synthetic_render(const SyntheticSpec& s, uint64_t seed, const Bias& bia
                                 k * true_mean(s, 2, x, y));
             const uint32_t p = uint32_t(y * s.width + x);
             const double q = caustic_probability(x, y);
+            // Sample i is the (i / K)-th of its batch i mod K, which holds n_b samples.
+            auto u = [&](uint32_t i) {
+                if (s.batches == 0) return uniform(rng);
+                const uint32_t k = s.batches, b = i % k;
+                const uint32_t n_b = s.spp / k + (b < s.spp % k ? 1 : 0);
+                return (double(i / k) + uniform(rng)) / double(n_b);
+            };
             for (uint32_t i = 0; i < s.spp; ++i) {
                 glm::dvec3 yv;
-                yv.x = draw(s.noise, q, rng);
-                yv.y = s.correlated_channels ? yv.x : draw(s.noise, q, rng);
-                yv.z = s.correlated_channels ? yv.x : draw(s.noise, q, rng);
-                film.add_sample(p, mu * yv);
+                yv.x = draw(s.noise, q, u(i), rng);
+                yv.y = s.correlated_channels ? yv.x : draw(s.noise, q, u(i), rng);
+                yv.z = s.correlated_channels ? yv.x : draw(s.noise, q, u(i), rng);
+                film.add_sample(p, mu * yv, i);
             }
         }
     ExrImage img = film.to_exr();

@@ -25,6 +25,11 @@ struct SyntheticSpec {
     uint32_t spp = 16;
     Noise noise = Noise::Gaussian;
     bool correlated_channels = false; // one Y for R, G, B (same path), else one per channel
+    // > 0: the film's batch estimator with this many batches (render/film.h), and the uniform
+    // that drives each sample's distribution (its quantile, or the rare sample's coin)
+    // stratified within its batch, u = (j + U) / n_b for the batch's j-th of n_b samples: a
+    // randomized quasi-Monte Carlo stand-in whose sample variance overstates the error.
+    uint32_t batches = 0;
 };
 
 // Caustic noise: the probability q of a pixel's rare sample, log-uniform in [1e-4, 1e-1] over
@@ -35,7 +40,8 @@ double caustic_probability(int x, int y);
 // columns so that zero-variance pixels are part of every test.
 double true_mean(const SyntheticSpec& s, int channel, int x, int y);
 
-// A rendering of the true mean with the given noise; spp recorded as twinpath:spp.
+// A rendering of the true mean with the given noise; spp recorded as twinpath:spp (and
+// twinpath:variance_dof by the film, with batches).
 // `scale` multiplies the true mean inside the rectangle [x0, x1) x [y0, y1) (a known bias).
 struct Bias {
     double scale = 1.0;

@@ -7,6 +7,7 @@
 
 #include "compare/compare.h"
 #include "compare/distributions.h"
+#include "shared/rng.h"
 #include "support/test_paths.h"
 
 #include <boost/math/distributions/chi_squared.hpp>
@@ -70,21 +71,27 @@ TEST_CASE("power: a 1% change of the white albedo in cornell, 64x64 at 256 spp",
     // White covers floor, ceiling, back wall and both blocks; +1% there brightens most pixels
     // by 1% or more (interreflection). Seeds differ; a control pair without the change must
     // stay consistent so that the detection is the change's doing.
+    // Both samplers (docs/sampling.md): Sobol's batch variance has fewer degrees of freedom but
+    // a smaller variance of the mean.
     const std::string dir = temp_dir("power-albedo");
-    RenderSpec base;
-    base.spp = 256;
-    base.seed = 1;
-    RenderSpec changed = base;
-    changed.scene = scene_with_scaled_albedo("cornell", "white", 1.01, dir);
-    changed.seed = 2;
-    RenderSpec control = base;
-    control.seed = 3;
-    const RgbImage a = render_cpu_image(base);
-    const CompareResult r = compare_images(a, render_cpu_image(changed), {});
-    INFO("p = " << r.p_value << ", global p = " << r.global.p_value);
-    CHECK(r.different);
-    for (const ChannelMetrics& m : r.metrics.channel) CHECK(m.bias < 0.0); // A is the darker
-    CHECK_FALSE(compare_images(a, render_cpu_image(control), {}).different);
+    const std::string brighter = scene_with_scaled_albedo("cornell", "white", 1.01, dir);
+    for (uint32_t sampler : {SAMPLER_RANDOM, SAMPLER_SOBOL}) {
+        RenderSpec base;
+        base.spp = 256;
+        base.seed = 1;
+        base.sampler = sampler;
+        RenderSpec changed = base;
+        changed.scene = brighter;
+        changed.seed = 2;
+        RenderSpec control = base;
+        control.seed = 3;
+        const RgbImage a = render_cpu_image(base);
+        const CompareResult r = compare_images(a, render_cpu_image(changed), {});
+        INFO("sampler " << sampler << ": p = " << r.p_value << ", global p = " << r.global.p_value);
+        CHECK(r.different);
+        for (const ChannelMetrics& m : r.metrics.channel) CHECK(m.bias < 0.0); // A is darker
+        CHECK_FALSE(compare_images(a, render_cpu_image(control), {}).different);
+    }
 }
 
 TEST_CASE("power: a 3% change inside a 32x32 patch, cornell 64x64 at 128 spp", "[compare][power]") {
@@ -125,19 +132,25 @@ TEST_CASE("power: the camera moved by half a pixel, cornell 64x64 at 64 spp", "[
     // A pixel spans 2 d tan(fov/2) / H at the target distance d = 0.8 m (fov 39.3077 deg,
     // H = 64); eye and target move sideways by half of that. Edges (blocks, light, wall
     // corners) change by up to the full contrast, so single pixels become significant.
+    // With the Sobol sampler the per-pixel t has only 7 degrees of freedom (docs/sampling.md),
+    // but the stratified pixel jitter shrinks the variance at edges most.
     const double half_pixel = 0.8 * std::tan(39.3077 / 2 * M_PI / 180) / 64;
-    RenderSpec sa;
-    sa.spp = 64;
-    sa.seed = 7;
-    RenderSpec sb = sa;
-    sb.seed = 8;
-    sb.eye = vec3(float(0.278 + half_pixel), 0.273f, -0.8f);
-    sb.target = vec3(float(0.278 + half_pixel), 0.273f, 0.0f);
-    const CompareResult r = compare_images(render_cpu_image(sa), render_cpu_image(sb), {});
-    INFO("p = " << r.p_value << ", significant pixels " << r.local.significant_pixels);
-    CHECK(r.different);
-    CHECK(r.local.significant_pixels > 0);
-    CHECK(r.global.p_value <= r.global_level);
+    for (uint32_t sampler : {SAMPLER_RANDOM, SAMPLER_SOBOL}) {
+        RenderSpec sa;
+        sa.spp = 64;
+        sa.seed = 7;
+        sa.sampler = sampler;
+        RenderSpec sb = sa;
+        sb.seed = 8;
+        sb.eye = vec3(float(0.278 + half_pixel), 0.273f, -0.8f);
+        sb.target = vec3(float(0.278 + half_pixel), 0.273f, 0.0f);
+        const CompareResult r = compare_images(render_cpu_image(sa), render_cpu_image(sb), {});
+        INFO("sampler " << sampler << ": p = " << r.p_value << ", significant pixels "
+                        << r.local.significant_pixels);
+        CHECK(r.different);
+        CHECK(r.local.significant_pixels > 0);
+        CHECK(r.global.p_value <= r.global_level);
+    }
 }
 
 TEST_CASE("power at unequal spp: a 1% change of the white albedo in cornell, 64x64, 128 spp "
@@ -147,26 +160,30 @@ TEST_CASE("power at unequal spp: a 1% change of the white albedo in cornell, 64x
     // 8x samples shrink the variance of the difference, and the borrowed variance
     // (differences.h) costs little where nothing is heavy-tailed. The change is tried in
     // either image, since under skew the two directions need not be equally easy; a control
-    // pair without the change stays consistent.
+    // pair without the change stays consistent. Both samplers (docs/sampling.md).
     const std::string dir = temp_dir("power-albedo-unequal");
     const std::string brighter = scene_with_scaled_albedo("cornell", "white", 1.01, dir);
-    RenderSpec low;
-    low.spp = 128;
-    low.seed = 21;
-    RenderSpec high = low;
-    high.spp = 1024;
-    high.seed = 22;
-    const RgbImage a = render_cpu_image(low), b = render_cpu_image(high);
-    CHECK_FALSE(compare_images(a, b, {}).different);
-    RenderSpec low_changed = low, high_changed = high;
-    low_changed.scene = high_changed.scene = brighter;
-    low_changed.seed = 23;
-    high_changed.seed = 24;
-    const CompareResult in_b = compare_images(a, render_cpu_image(high_changed), {});
-    const CompareResult in_a = compare_images(render_cpu_image(low_changed), b, {});
-    INFO("in B: p = " << in_b.p_value << "; in A: p = " << in_a.p_value);
-    CHECK(in_b.different);
-    CHECK(in_a.different);
+    for (uint32_t sampler : {SAMPLER_RANDOM, SAMPLER_SOBOL}) {
+        RenderSpec low;
+        low.spp = 128;
+        low.seed = 21;
+        low.sampler = sampler;
+        RenderSpec high = low;
+        high.spp = 1024;
+        high.seed = 22;
+        const RgbImage a = render_cpu_image(low), b = render_cpu_image(high);
+        CHECK_FALSE(compare_images(a, b, {}).different);
+        RenderSpec low_changed = low, high_changed = high;
+        low_changed.scene = high_changed.scene = brighter;
+        low_changed.seed = 23;
+        high_changed.seed = 24;
+        const CompareResult in_b = compare_images(a, render_cpu_image(high_changed), {});
+        const CompareResult in_a = compare_images(render_cpu_image(low_changed), b, {});
+        INFO("sampler " << sampler << ": in B: p = " << in_b.p_value
+                        << "; in A: p = " << in_a.p_value);
+        CHECK(in_b.different);
+        CHECK(in_a.different);
+    }
 }
 
 TEST_CASE("power at unequal spp: a 5% change confined to the caustic, 1024 against 8192 spp",

@@ -6,6 +6,7 @@
 
 #include "compare/compare.h"
 #include "image/exr_io.h"
+#include "shared/rng.h"
 #include "support/test_paths.h"
 
 #include <catch2/catch.hpp>
@@ -34,6 +35,65 @@ TEST_CASE("size on real renders: independent CPU renders are consistent at the n
             b.seed = 2 * i + 2;
             a.threads = 1;
             b.threads = 2;
+            const CompareResult r =
+                compare_images(render_cpu_image(a), render_cpu_image(b), CompareOptions{});
+            rejected05 += r.p_value <= 0.05;
+            rejected01 += r.p_value <= 0.01;
+        }
+        INFO(scene);
+        INFO(describe_rate("alpha 0.05", rejected05, n, 0.05));
+        INFO(describe_rate("alpha 0.01", rejected01, n, 0.01));
+        CHECK(rejected05 <= binomial_interval99(n, 0.05).hi);
+        CHECK(rejected01 <= binomial_interval99(n, 0.01).hi);
+    }
+}
+
+TEST_CASE("size on real renders with the Sobol sampler: independent renders are consistent",
+          "[compare][renders][batches]") {
+    // As above with the Sobol sampler and its batch variance (docs/sampling.md) at 64 spp
+    // (8 points in each of the 8 batches), so that the points within a batch are stratified;
+    // cornell_spheres brings the caustics. 40 pairs per scene; only the upper end binds.
+    for (const char* scene : {"cornell", "spheres", "cornell_spheres"}) {
+        const size_t n = 40;
+        size_t rejected05 = 0, rejected01 = 0;
+        for (uint32_t i = 0; i < n; ++i) {
+            RenderSpec a, b;
+            a.scene = b.scene = scene;
+            a.width = b.width = a.height = b.height = 32;
+            a.spp = b.spp = 64;
+            a.sampler = b.sampler = SAMPLER_SOBOL;
+            a.seed = 3000 + 2 * i;
+            b.seed = 3001 + 2 * i;
+            const CompareResult r =
+                compare_images(render_cpu_image(a), render_cpu_image(b), CompareOptions{});
+            rejected05 += r.p_value <= 0.05;
+            rejected01 += r.p_value <= 0.01;
+        }
+        INFO(scene);
+        INFO(describe_rate("alpha 0.05", rejected05, n, 0.05));
+        INFO(describe_rate("alpha 0.01", rejected01, n, 0.01));
+        CHECK(rejected05 <= binomial_interval99(n, 0.05).hi);
+        CHECK(rejected01 <= binomial_interval99(n, 0.01).hi);
+    }
+}
+
+TEST_CASE("size on real renders with the Sobol sampler at unequal spp: cornell_spheres and "
+          "cornell at 1:8",
+          "[compare][renders][batches][unequal-spp]") {
+    // 16 against 128 spp, both Sobol: the borrowed variance (differences.h) meets batch
+    // estimates whose per-sample variance n Var(mean) falls with n.
+    for (const char* scene : {"cornell_spheres", "cornell"}) {
+        const size_t n = 20;
+        size_t rejected05 = 0, rejected01 = 0;
+        for (uint32_t i = 0; i < n; ++i) {
+            RenderSpec a, b;
+            a.scene = b.scene = scene;
+            a.width = b.width = a.height = b.height = 32;
+            a.spp = 16;
+            b.spp = 128;
+            a.sampler = b.sampler = SAMPLER_SOBOL;
+            a.seed = 4000 + 2 * i;
+            b.seed = 4001 + 2 * i;
             const CompareResult r =
                 compare_images(render_cpu_image(a), render_cpu_image(b), CompareOptions{});
             rejected05 += r.p_value <= 0.05;

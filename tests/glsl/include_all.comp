@@ -82,7 +82,7 @@ layout(local_size_x = 1) in;
 layout(scalar, binding = 0) buffer Result { vec4 value; } result;
 
 void main() {
-    RngKey key = rng_key(1u, 2u, 3u);
+    RngKey key = rng_key(SAMPLER_SOBOL, 1u, 2u, 3u);
     RayCounts rays = RayCounts(0u, 0u, 0u);
     result.value = vec4(rng_get(key, 0u), phong_power(0.5f, 10.0f), path_radiance(0u, 0u, 0u, rays).x,
                         1.0f);

@@ -153,12 +153,18 @@ void make_input(uint32_t id, InputGen& g, FnIn& x) {
     case FN_UMUL_HI:
     case FN_RNG_GET_BITS:
     case FN_RNG_BOUNCE_BITS:
+    case FN_LAINE_KARRAS_PERMUTATION:
+    case FN_NESTED_UNIFORM_SCRAMBLE:
+    case FN_SOBOL_DIM1:
     case FN_ALIAS_RESOLVE:
         x.u = uvec4(g.u32(), g.u32(), g.u32(), g.u32());
         x.f[0] = vec4(g.uni(), g.uni(), 0.0f, 0.0f);
         break;
     case FN_RNG_BOUNCE_DIM:
         x.u = uvec4(g.below(1000), g.below(10), 0u, 0u);
+        break;
+    case FN_RNG_GROUP_FIRST:
+        x.u = uvec4(g.below(1000), 0u, 0u, 0u);
         break;
     case FN_SAMPLE_COSINE_HEMISPHERE:
     case FN_SAMPLE_UNIFORM_SPHERE:

@@ -185,6 +185,10 @@ std::vector<Case> cases() {
     c.push_back({FN_UMUL_HI, "umul_hi", exact});
     c.push_back({FN_RNG_GET_BITS, "rng_get_bits", exact});
     c.push_back({FN_RNG_BOUNCE_BITS, "rng_bounce_bits", exact});
+    c.push_back({FN_LAINE_KARRAS_PERMUTATION, "laine_karras_permutation", exact});
+    c.push_back({FN_NESTED_UNIFORM_SCRAMBLE, "nested_uniform_scramble", exact}); // bitfieldReverse
+    c.push_back({FN_SOBOL_DIM1, "sobol_dim1", exact});
+    c.push_back({FN_RNG_GROUP_FIRST, "rng_group_first", exact});
     // cos/sin(2 pi u2) (2^-11) times sin(theta) = sqrt(u1); cos(theta) = sqrt(1 - u1).
     c.push_back({FN_SAMPLE_COSINE_HEMISPHERE, "sample_cosine_hemisphere",
                  [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {

@@ -145,3 +145,66 @@ TEST_CASE("film: variance of the mean and the EXR channels", "[film]") {
     CHECK(img.channel("R")[1] == 0.0f); // no samples: mean 0
     CHECK(img.channel("variance.R")[1] == 0.0f);
 }
+
+TEST_CASE("film: the batch estimator is the variance of the batch means", "[film]") {
+    // 8 batches of 5 samples (sample s in batch s mod 8): Var(mean) = s^2(batch means) / 8,
+    // computed here in long double from the batch means; the film's random-group form reduces
+    // to it at equal batch sizes, to rounding (a few eps relative).
+    const uint32_t k = 8, per = 5;
+    const std::vector<double> x = samples(k * per, 1.0, 0.5, 11);
+    tp::Film f(1, 1, k);
+    for (uint32_t s = 0; s < x.size(); ++s) f.add_sample(0, glm::dvec3(x[s]), s);
+    std::vector<long double> m(k, 0.0L);
+    for (uint32_t s = 0; s < x.size(); ++s) m[s % k] += x[s] / (long double)per;
+    long double mean = 0.0L, ss = 0.0L;
+    for (long double v : m) mean += v / k;
+    for (long double v : m) ss += (v - mean) * (v - mean);
+    const double expected = double(ss / (k - 1) / k);
+    CHECK(f.count(0) == x.size());
+    CHECK(f.variance_of_mean(0).x == Approx(expected).epsilon(64 * kEps));
+    const tp::ExrImage img = f.to_exr();
+    CHECK(img.strings.at("twinpath:variance_estimator") == "batches");
+    CHECK(img.integers.at("twinpath:variance_dof") == k - 1);
+
+    SECTION("the GPU's per-batch sums give the same film") {
+        tp::Film g(1, 1, k);
+        for (uint32_t b = 0; b < k; ++b) {
+            glm::dvec3 sum(0.0), sum_sq(0.0);
+            uint64_t n = 0;
+            for (uint32_t s = b; s < x.size(); s += k, ++n) {
+                sum += glm::dvec3(x[s]);
+                sum_sq += glm::dvec3(x[s] * x[s]);
+            }
+            g.add_batch(0, n, sum, sum_sq, b);
+        }
+        CHECK(g.mean(0).x == Approx(f.mean(0).x).epsilon(64 * kEps));
+        CHECK(g.variance_of_mean(0).x == Approx(f.variance_of_mean(0).x).epsilon(64 * kEps));
+    }
+    SECTION("fewer samples than batches: one sample per batch is the sample variance") {
+        // 3 samples in 3 batches: K' = 3, n_b / N = 1/3, so 3/2 * sum (x_i - mean)^2 / 9 =
+        // s^2 / 3, the samples estimator; 2 degrees of freedom.
+        tp::Film one(1, 1, k), plain(1, 1);
+        for (uint32_t s = 0; s < 3; ++s) {
+            one.add_sample(0, glm::dvec3(x[s]), s);
+            plain.add_sample(0, glm::dvec3(x[s]));
+        }
+        CHECK(one.variance_of_mean(0).x == Approx(plain.variance_of_mean(0).x).epsilon(16 * kEps));
+        CHECK(one.variance_dof() == 2);
+    }
+    SECTION("unequal batch sizes weigh each batch mean by its share of the samples") {
+        // 9 samples: batch 0 holds samples 0 and 8, the others one each. Independent
+        // computation of K'/(K'-1) sum (n_b/N)^2 (m_b - mean)^2.
+        tp::Film u(1, 1, k);
+        for (uint32_t s = 0; s < 9; ++s) u.add_sample(0, glm::dvec3(x[s]), s);
+        long double total = 0.0L;
+        for (uint32_t s = 0; s < 9; ++s) total += x[s];
+        const long double mu = total / 9;
+        long double v = 0.0L;
+        for (uint32_t b = 0; b < k; ++b) {
+            const long double mb = b == 0 ? (x[0] + (long double)x[8]) / 2 : x[b];
+            const long double w = (b == 0 ? 2.0L : 1.0L) / 9;
+            v += w * w * (mb - mu) * (mb - mu);
+        }
+        CHECK(u.variance_of_mean(0).x == Approx(double(v * 8 / 7)).epsilon(64 * kEps));
+    }
+}

@@ -121,3 +121,13 @@ TEST_CASE("clamp is min of max and exp2 inverts log2 (GLSL 8.2 and 8.3)", "[glsl
     CHECK(tp::log2(1.0f) == 0.0f);
     CHECK(tp::exp2(0.0f) == 1.0f);
 }
+
+TEST_CASE("bitfieldReverse moves bit n to bit 31 - n (GLSL 8.8)", "[glsl]") {
+    // rng.h's Sobol sampler reads the van der Corput point and Burley's scramble through it.
+    CHECK(tp::bitfieldReverse(0u) == 0u);
+    CHECK(tp::bitfieldReverse(1u) == 0x80000000u);
+    CHECK(tp::bitfieldReverse(0x80000000u) == 1u);
+    CHECK(tp::bitfieldReverse(3u) == 0xC0000000u);
+    CHECK(tp::bitfieldReverse(0x12345678u) == 0x1E6A2C48u);
+    CHECK(tp::bitfieldReverse(0xFFFFFFFFu) == 0xFFFFFFFFu);
+}

@@ -118,11 +118,20 @@ const uint FN_INTERSECT_TRIANGLE = 82u;
 const uint FN_UMUL_HI = 83u;
 const uint FN_RNG_GET_BITS = 84u;
 const uint FN_RNG_BOUNCE_BITS = 85u;
-const uint FN_COUNT = 86u;
+const uint FN_LAINE_KARRAS_PERMUTATION = 86u;
+const uint FN_NESTED_UNIFORM_SCRAMBLE = 87u;
+const uint FN_SOBOL_DIM1 = 88u;
+const uint FN_RNG_GROUP_FIRST = 89u;
+const uint FN_COUNT = 90u;
 
 // ---- argument unpacking ----------------------------------------------------------------------
 inline vec3 fn3(FnIn x, uint i) {
     return vec3(x.f[i].x, x.f[i].y, x.f[i].z);
+}
+
+// seed u.x, pixel u.y, sample u.z; the sampler from f0.x, so that random inputs try both.
+inline RngKey fn_rng_key(FnIn x) {
+    return rng_key(x.f[0].x < 0.5f ? SAMPLER_RANDOM : SAMPLER_SOBOL, x.u.x, x.u.y, x.u.z);
 }
 
 // kd f0, ns f0.w, ks f1, ior f1.w, tf f6, type u.x; no emission, no texture.
@@ -282,27 +291,39 @@ inline FnOut run_function(uint id, FnIn x) {
         o.f[0].x = uint_to_unit_float(x.u.x);
         break;
     case FN_RNG_KEY: {
-        RngKey k = rng_key(x.u.x, x.u.y, x.u.z);
-        o.u = uvec4(k.seed, k.pixel, k.sample_index, k.pad0);
+        RngKey k = fn_rng_key(x);
+        o.u = uvec4(k.seed, k.pixel, k.sample_index, k.sampler_id);
         break;
     }
     case FN_RNG_GET:
-        o.f[0].x = rng_get(rng_key(x.u.x, x.u.y, x.u.z), x.u.w);
+        o.f[0].x = rng_get(fn_rng_key(x), x.u.w);
         break;
     case FN_UMUL_HI:
         o.u.x = umul_hi(x.u.x, x.u.y);
         break;
     case FN_RNG_GET_BITS:
-        o.u.x = rng_get_bits(rng_key(x.u.x, x.u.y, x.u.z), x.u.w);
+        o.u.x = rng_get_bits(fn_rng_key(x), x.u.w);
         break;
     case FN_RNG_BOUNCE_BITS:
-        o.u.x = rng_bounce_bits(rng_key(x.u.x, x.u.y, x.u.z), x.u.w & 0xFFu, (x.u.w >> 8u) % 10u);
+        o.u.x = rng_bounce_bits(fn_rng_key(x), x.u.w & 0xFFu, (x.u.w >> 8u) % 10u);
         break;
     case FN_RNG_BOUNCE_DIM:
         o.u.x = rng_bounce_dim(x.u.x, x.u.y);
         break;
     case FN_RNG_BOUNCE:
-        o.f[0].x = rng_bounce(rng_key(x.u.x, x.u.y, x.u.z), x.u.w & 0xFFu, (x.u.w >> 8u) % 10u);
+        o.f[0].x = rng_bounce(fn_rng_key(x), x.u.w & 0xFFu, (x.u.w >> 8u) % 10u);
+        break;
+    case FN_LAINE_KARRAS_PERMUTATION:
+        o.u.x = laine_karras_permutation(x.u.x, x.u.y);
+        break;
+    case FN_NESTED_UNIFORM_SCRAMBLE:
+        o.u.x = nested_uniform_scramble(x.u.x, x.u.y);
+        break;
+    case FN_SOBOL_DIM1:
+        o.u.x = sobol_dim1(x.u.x);
+        break;
+    case FN_RNG_GROUP_FIRST:
+        o.u.x = rng_group_first(x.u.x);
         break;
     case FN_SAMPLE_COSINE_HEMISPHERE:
         fn_put3(o, 0u, sample_cosine_hemisphere(vec2(a.x, a.y)));

@@ -23,7 +23,7 @@ vec3 f3(uint i) { return vec3(p.f[i].x, p.f[i].y, p.f[i].z); }
 void main() {
     uint i = gl_GlobalInvocationID.x;
     if (i >= push.count) return;
-    RngKey key = rng_key(push.seed, i, 0u);
+    RngKey key = rng_key(SAMPLER_RANDOM, push.seed, i, 0u);
     vec4 u = vec4(rng_get(key, 0u), rng_get(key, 1u), rng_get(key, 2u), rng_get(key, 3u));
     vec4 r = vec4(0.0f);
     switch (push.sampler_id) {
@@ -41,7 +41,7 @@ void main() {
         break;
     case DRAW_RNG_PAIR: {
         // The direction pair of bounce 3, pixels x samples as in the CPU test.
-        RngKey k = rng_key(7u, i / 1000u, i % 1000u);
+        RngKey k = rng_key(SAMPLER_RANDOM, 7u, i / 1000u, i % 1000u);
         r = vec4(rng_bounce(k, 3u, RNG_DIR_U), rng_bounce(k, 3u, RNG_DIR_V), 0.0f, 1.0f);
         break;
     }
