@@ -137,8 +137,9 @@ TEST_CASE("power: two groups that share the index shuffle are rejected", "[chi2]
 }
 
 TEST_CASE("sobol_dim1 is Sobol's second dimension", "[sobol]") {
-    // The first points of the sequence for the polynomial x + 1 (Bratley & Fox 1988, Table 2;
-    // Joe & Kuo 2008): 0, 1/2, 3/4, 1/4, 3/8, 7/8, 5/8, 1/8.
-    const double expected[8] = {0.0, 0.5, 0.75, 0.25, 0.375, 0.875, 0.625, 0.125};
+    // Joe & Kuo's m_1, m_2, m_3 = 1, 3, 5 for the polynomial x + 1 give the direction numbers
+    // v = 1/2, 3/4, 5/8, and point i is the xor of v_k over the set bits k of i (natural
+    // order, not Gray-code order): 0, 1/2, 3/4, 1/4, 5/8, 1/8, 3/8, 7/8.
+    const double expected[8] = {0.0, 0.5, 0.75, 0.25, 0.625, 0.125, 0.375, 0.875};
     for (uint32_t i = 0; i < 8; ++i) CHECK(double(tp::sobol_dim1(i)) * 0x1p-32 == expected[i]);
 }
