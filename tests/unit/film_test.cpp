@@ -208,3 +208,20 @@ TEST_CASE("film: the batch estimator is the variance of the batch means", "[film
         CHECK(u.variance_of_mean(0).x == Approx(double(v * 8 / 7)).epsilon(64 * kEps));
     }
 }
+
+TEST_CASE("film: merging films of disjoint sample ranges keeps the batch estimate", "[film]") {
+    // --device all renders disjoint ranges on each device and merges the films: batch b of
+    // the union must hold both parts' samples of batch b, so the merged film equals one film
+    // of all the samples (to rounding).
+    const uint32_t k = 8;
+    const std::vector<double> x = samples(40, 1.0, 0.5, 13);
+    tp::Film whole(1, 1, k), a(1, 1, k), b(1, 1, k);
+    for (uint32_t s = 0; s < x.size(); ++s) {
+        whole.add_sample(0, glm::dvec3(x[s]), s);
+        (s < 17 ? a : b).add_sample(0, glm::dvec3(x[s]), s);
+    }
+    a.merge(b);
+    CHECK(a.count(0) == whole.count(0));
+    CHECK(a.mean(0).x == Approx(whole.mean(0).x).epsilon(64 * kEps));
+    CHECK(a.variance_of_mean(0).x == Approx(whole.variance_of_mean(0).x).epsilon(64 * kEps));
+}
