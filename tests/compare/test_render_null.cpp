@@ -77,36 +77,6 @@ TEST_CASE("size on real renders with the Sobol sampler: independent renders are 
     }
 }
 
-TEST_CASE("size on real renders with the Sobol sampler at unequal spp: cornell_spheres and "
-          "cornell at 1:8",
-          "[compare][renders][batches][unequal-spp]") {
-    // 16 against 128 spp, both Sobol: the borrowed variance (differences.h) meets batch
-    // estimates whose per-sample variance n Var(mean) falls with n.
-    for (const char* scene : {"cornell_spheres", "cornell"}) {
-        const size_t n = 20;
-        size_t rejected05 = 0, rejected01 = 0;
-        for (uint32_t i = 0; i < n; ++i) {
-            RenderSpec a, b;
-            a.scene = b.scene = scene;
-            a.width = b.width = a.height = b.height = 32;
-            a.spp = 16;
-            b.spp = 128;
-            a.sampler = b.sampler = SAMPLER_SOBOL;
-            a.seed = 4000 + 2 * i;
-            b.seed = 4001 + 2 * i;
-            const CompareResult r =
-                compare_images(render_cpu_image(a), render_cpu_image(b), CompareOptions{});
-            rejected05 += r.p_value <= 0.05;
-            rejected01 += r.p_value <= 0.01;
-        }
-        INFO(scene);
-        INFO(describe_rate("alpha 0.05", rejected05, n, 0.05));
-        INFO(describe_rate("alpha 0.01", rejected01, n, 0.01));
-        CHECK(rejected05 <= binomial_interval99(n, 0.05).hi);
-        CHECK(rejected01 <= binomial_interval99(n, 0.01).hi);
-    }
-}
-
 TEST_CASE("size on real renders at unequal spp: cornell_spheres (caustics), cornell and spheres "
           "at 1:1, 1:8, 1:64",
           "[compare][renders][unequal-spp]") {
