@@ -51,10 +51,11 @@ fs::path script(const fs::path& dir, const std::string& text) {
 // pow() is not correctly rounded (GLSL allows several ulp), so a channel whose exact value lies
 // within those ulp of a rounding boundary between two 8-bit codes may round the other way: at
 // most one code value, and only for the rare channel that close to a boundary.
-void check_matches_render(const fs::path& dir, const std::string& shot, uint32_t spp) {
+void check_matches_render(const fs::path& dir, const std::string& shot, uint32_t spp,
+                          const std::string& sampler = "random") {
     const auto r = run(tp::test::twinpath("render cornell --backend vulkan --width 40 --height 30 "
-                                          "--seed 7 --spp " +
-                                          std::to_string(spp) + " -o " +
+                                          "--seed 7 --sampler " +
+                                          sampler + " --spp " + std::to_string(spp) + " -o " +
                                           shell_quote((dir / "r.exr").string()) + " --png " +
                                           shell_quote((dir / "r.png").string())));
     INFO(r.out);
@@ -97,6 +98,20 @@ TEST_CASE("view --headless runs the same frame loop and reports frame times", "[
     CHECK(v.out.find("view --headless: 5 frames: mean") != std::string::npos);
     CHECK(v.out.find("5 spp") != std::string::npos);
     check_matches_render(dir, "shot.png", 5);
+}
+
+// The Sobol sampler keeps one accumulator per batch (sample s in slot s mod 8): the display sums
+// a pixel's slots. 11 spp fill slots 0-2 twice and the others once.
+TEST_CASE("view --sampler sobol shows render --sampler sobol --png", "[view]") {
+    const fs::path dir = tp::test::temp_dir("view-sobol");
+    const auto v =
+        run("cd " + shell_quote(dir.string()) + " && env -u DISPLAY -u WAYLAND_DISPLAY " +
+            tp::test::twinpath("view cornell --headless --width 40 --height 30 --seed 7 "
+                               "--sampler sobol --frames 11 --spp-per-frame 1 "
+                               "--screenshot shot.png"));
+    INFO(v.out);
+    REQUIRE(v.exit_code == 0);
+    check_matches_render(dir, "shot.png", 11, "sobol");
 }
 
 TEST_CASE("a scripted camera move restarts the accumulation; S saves EXR and PNG", "[view]") {
