@@ -47,11 +47,14 @@ bool loop_budget_held() {
 
 PixelCounts render_pixel(uvec2 pixel) {
     PixelCounts c = pixel_counts_zero();
-    dvec3 sum = dvec3(0.0);
-    dvec3 sum_sq = dvec3(0.0);
-    uint n = 0u;
     uint slots = accum_slots(params.sampler_id);
     uint first = (pixel.y * params.camera.width + pixel.x) * slots;
+    // The running sums continue the accumulator's, so a pixel's samples are added to one double
+    // sum in sample order however the render is split into batches and repeated dispatches:
+    // the batch planner follows measured time, and the same seed must still give the same bits.
+    dvec3 sum = accum[first].sum;
+    dvec3 sum_sq = accum[first].sum_sq;
+    uint n = accum[first].count;
     uint end = batch.sample_begin + batch.sample_count;
     // next_sample is 0 in a fresh accumulator, below a --sample-offset render's first sample.
     uint s = max(accum[first].next_sample, batch.sample_begin);
@@ -88,9 +91,11 @@ PixelCounts render_pixel(uvec2 pixel) {
         }
     }
     c.truncated = s < end ? 1u : 0u;
-    accum[first].sum += sum;
-    accum[first].sum_sq += sum_sq;
-    accum[first].count += n;
+    if (slots == 1u) {
+        accum[first].sum = sum;
+        accum[first].sum_sq = sum_sq;
+        accum[first].count = n;
+    }
     accum[first].next_sample = s;
     return c;
 }
