@@ -32,11 +32,6 @@ CompareResult compare_images(const RgbImage& a, const RgbImage& b, const Compare
             r.warnings.push_back(fmt::format(
                 "{} has no twinpath:spp: its variance is taken as exact (normal p-values{})",
                 img->path, two ? "" : ", tiles not enlarged"));
-    // The borrowing rule (differences.h) takes n Var(mean) as the per-sample variance, which
-    // batch estimates of stratified samples understate (docs/sampling.md, "Limits").
-    if (two && a.spp && b.spp && *a.spp != *b.spp && (a.variance_dof || b.variance_dof))
-        r.warnings.push_back("batch-estimated variance (--sampler sobol) at unequal spp: the "
-                             "false-alarm rate can exceed alpha; compare at equal spp");
     int tile = opt.tile;
     const RgbImage& noisy = a.has_variance() ? a : b;
     if (!two && noisy.spp)

@@ -30,18 +30,19 @@ std::string borrowing_sentence(const Differences& d) {
                        3 * d.borrowed.size(), d.pixels_borrowed, d.borrowed.size());
 }
 
-PairVariance pair_variance(const VarianceRule& rule, double va, double vb, double va2, double vb2) {
+PairVariance pair_variance(const VarianceRule& rule, const SideVariance& a, const SideVariance& b) {
     PairVariance out;
+    double va = a.var, vb = b.var, va2 = a.var2, vb2 = b.var2;
     double ka = rule.inv_dof_a, kb = rule.inv_dof_b;
-    if (rule.borrower == VarianceRule::A && vb * rule.ratio > va) {
-        va = vb * rule.ratio;
-        va2 = vb2 * rule.ratio * rule.ratio;
-        ka = rule.inv_dof_b;
+    if (rule.borrower == VarianceRule::A && b.lend * rule.ratio > va) {
+        va = b.lend * rule.ratio;
+        va2 = b.lend2 * rule.ratio * rule.ratio;
+        ka = rule.inv_dof_lend_b;
         out.borrowed = true;
-    } else if (rule.borrower == VarianceRule::B && va * rule.ratio > vb) {
-        vb = va * rule.ratio;
-        vb2 = va2 * rule.ratio * rule.ratio;
-        kb = rule.inv_dof_a;
+    } else if (rule.borrower == VarianceRule::B && a.lend * rule.ratio > vb) {
+        vb = a.lend * rule.ratio;
+        vb2 = a.lend2 * rule.ratio * rule.ratio;
+        kb = rule.inv_dof_lend_a;
         out.borrowed = true;
     }
     out.var = va + vb;
@@ -61,9 +62,23 @@ Differences compute_differences(const RgbImage& a, const RgbImage& b, double rel
         if (img.variance_dof) return 1.0 / double(*img.variance_dof);
         return img.spp ? 1.0 / double(std::max<int64_t>(*img.spp - 1, 1)) : 0.0;
     };
+    // What an image lends: its sample_variance over its own n with n - 1 degrees of freedom
+    // where it has one, else its variance of the mean with that estimate's.
+    auto inv_dof_lend = [&](const RgbImage& img) {
+        return img.has_sample_variance() && img.spp
+                   ? 1.0 / double(std::max<int64_t>(*img.spp - 1, 1))
+                   : inv_dof(img);
+    };
+    auto lend = [](const RgbImage& img, size_t c, size_t i) {
+        if (!img.has_variance()) return 0.0;
+        if (img.has_sample_variance() && img.spp) return img.sample_var[c][i] / double(*img.spp);
+        return img.var[c][i];
+    };
     VarianceRule& rule = out.rule;
     rule.inv_dof_a = inv_dof(a);
     rule.inv_dof_b = inv_dof(b);
+    rule.inv_dof_lend_a = inv_dof_lend(a);
+    rule.inv_dof_lend_b = inv_dof_lend(b);
     // The side with strictly fewer samples borrows, when both images have variance and spp.
     if (a.has_variance() && b.has_variance() && a.spp && b.spp && *a.spp != *b.spp) {
         rule.borrower = *a.spp < *b.spp ? VarianceRule::A : VarianceRule::B;
@@ -76,16 +91,20 @@ Differences compute_differences(const RgbImage& a, const RgbImage& b, double rel
         for (size_t i = 0; i < n; ++i)
             scale += std::max(std::fabs(a.mean[c][i]), std::fabs(b.mean[c][i]));
         scale /= double(n);
-        for (Planes* p :
-             {&out.d, &out.var_a, &out.var_b, &out.floor, &out.noise, &out.var, &out.welch})
+        for (Planes* p : {&out.d, &out.var_a, &out.var_b, &out.lend_a, &out.lend_b, &out.floor,
+                          &out.noise, &out.var, &out.welch})
             (*p)[c].resize(n);
         for (size_t i = 0; i < n; ++i) {
             const double va = a.has_variance() ? a.var[c][i] : 0.0;
             const double vb = b.has_variance() ? b.var[c][i] : 0.0;
-            const PairVariance pv = pair_variance(rule, va, vb, va * va, vb * vb);
+            const double la = lend(a, c, i), lb = lend(b, c, i);
+            const PairVariance pv =
+                pair_variance(rule, {va, va * va, la, la * la}, {vb, vb * vb, lb, lb * lb});
             out.d[c][i] = a.mean[c][i] - b.mean[c][i];
             out.var_a[c][i] = va;
             out.var_b[c][i] = vb;
+            out.lend_a[c][i] = la;
+            out.lend_b[c][i] = lb;
             out.floor[c][i] = floor_variance(a.mean[c][i], b.mean[c][i], scale, relative_floor);
             out.noise[c][i] = pv.var;
             out.var[c][i] = pv.var + out.floor[c][i];

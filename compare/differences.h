@@ -22,6 +22,12 @@
 // applies it to the tile's summed variances (tile_test.h), where the max of two sums inflates
 // the variance less than a sum of per-pixel maxima. docs/compare.md has the calibration at
 // 1:8 and 1:64.
+//
+// The per-sample variance lent is s^2 = n var for an image whose samples are independent. For a
+// batch-estimated image (the Sobol sampler, render/film.h) n var understates sigma^2 by the
+// stratification's gain, so such an image lends its sample_variance channel instead: the
+// unbiased sample variance of its samples, which estimates the variance of one sample's
+// marginal distribution (docs/sampling.md, "Unequal spp").
 #pragma once
 
 #include "compare/rgb_image.h"
@@ -36,12 +42,22 @@ namespace tp {
 constexpr double kDefaultRelativeFloor = 1e-4;
 
 // The borrowing rule above for one pair of variances of the mean (a pixel's, or a tile's
-// sums): which side borrows, the ratio n_other / n_self that turns the other side's variance
-// of the mean into this side's, and 1 / dof of each image's estimate (0: taken as exact).
+// sums): which side borrows, the ratio n_other / n_self that turns the other side's per-sample
+// variance over its own n into this side's, and 1 / dof of each image's estimate and of the
+// per-sample variance it lends (0: taken as exact).
 struct VarianceRule {
     enum Borrower : uint8_t { None, A, B } borrower = None;
     double ratio = 1.0;
     double inv_dof_a = 0.0, inv_dof_b = 0.0;
+    double inv_dof_lend_a = 0.0, inv_dof_lend_b = 0.0;
+};
+
+// One image's side of a pixel-channel (or a tile's sums): its variance of the mean, what it
+// lends (its per-sample variance over its own n; equal to var unless batch-estimated) and the
+// sums of their squares over the summed pixels (var^2, lend^2 for one pixel).
+struct SideVariance {
+    double var = 0.0, var2 = 0.0;
+    double lend = 0.0, lend2 = 0.0;
 };
 
 struct PairVariance {
@@ -50,20 +66,19 @@ struct PairVariance {
     bool borrowed = false;
 };
 
-// va, vb: the images' variances of the mean (summed over a tile's pixels for the tile test);
-// va2, vb2: the sums of their squares over the same pixels (va^2, vb^2 for one pixel).
-PairVariance pair_variance(const VarianceRule& rule, double va, double vb, double va2, double vb2);
+PairVariance pair_variance(const VarianceRule& rule, const SideVariance& a, const SideVariance& b);
 
 struct Differences {
     int width = 0, height = 0;
     VarianceRule rule;
-    Planes d;            // a - b
-    Planes var_a, var_b; // each image's own variance of the mean (0 for an exact image)
-    Planes floor;        // floor^2 (floor_variance)
-    Planes noise;        // var_a + var_b after borrowing: the variance the images estimated
-    Planes var;          // noise + floor^2
-    Planes welch;        // var_a^2/(dof_a) + var_b^2/(dof_b); 0 where the floor alone remains
-    size_t at_floor = 0; // pixel-channels whose estimated variance is 0 in both images
+    Planes d;              // a - b
+    Planes var_a, var_b;   // each image's own variance of the mean (0 for an exact image)
+    Planes lend_a, lend_b; // what each lends: its per-sample variance over its own n
+    Planes floor;          // floor^2 (floor_variance)
+    Planes noise;          // var_a + var_b after borrowing: the variance the images estimated
+    Planes var;            // noise + floor^2
+    Planes welch;          // var_a^2/(dof_a) + var_b^2/(dof_b); 0 where the floor alone remains
+    size_t at_floor = 0;   // pixel-channels whose estimated variance is 0 in both images
     // Pixel-channels where the image with fewer samples took the other's per-sample variance.
     size_t variance_borrowed = 0;
     std::vector<uint8_t> borrowed; // per pixel: 1 when any of its channels borrowed

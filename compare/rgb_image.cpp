@@ -1,8 +1,10 @@
 #include "compare/rgb_image.h"
 
 #include "image/exr_io.h"
+#include "render/film.h"
 #include "util/error.h"
 
+#include <array>
 #include <cmath>
 #include <fmt/format.h>
 
@@ -10,7 +12,9 @@ namespace tp {
 namespace {
 
 const char* const kColour[3] = {"R", "G", "B"};
-const char* const kVariance[3] = {"variance.R", "variance.G", "variance.B"};
+const std::array<std::string, 3> kVariance = {"variance.R", "variance.G", "variance.B"};
+const std::array<std::string, 3> kSampleVariance = {
+    sample_variance_channel(0), sample_variance_channel(1), sample_variance_channel(2)};
 
 std::string channel_list(const ExrImage& img) {
     std::string s;
@@ -53,15 +57,27 @@ RgbImage rgb_image_from_exr(const ExrImage& img, const std::string& path) {
     for (const char* c : kColour)
         if (!img.has(c))
             input_error("{}: no channel {} (channels: {})", path, c, channel_list(img));
-    int nvar = 0;
-    for (const char* c : kVariance) nvar += img.has(c);
-    if (nvar != 0 && nvar != 3)
-        input_error("{}: has only some of variance.R, variance.G, variance.B (channels: {})", path,
-                    channel_list(img));
+    auto count_of = [&](const std::array<std::string, 3>& set) {
+        const int n = img.has(set[0]) + img.has(set[1]) + img.has(set[2]);
+        if (n != 0 && n != 3)
+            input_error("{}: has only some of {}, {}, {} (channels: {})", path, set[0], set[1],
+                        set[2], channel_list(img));
+        return n;
+    };
+    const int nvar = count_of(kVariance), nsample = count_of(kSampleVariance);
 
     std::vector<std::string> names(kColour, kColour + 3);
-    if (nvar == 3) names.insert(names.end(), kVariance, kVariance + 3);
+    if (nvar == 3) names.insert(names.end(), kVariance.begin(), kVariance.end());
+    if (nsample == 3) names.insert(names.end(), kSampleVariance.begin(), kSampleVariance.end());
     require_finite(path, img, names);
+    auto read_variance = [&](const std::string& name, std::vector<double>& out) {
+        const std::vector<float>& v = img.channel(name);
+        for (size_t i = 0; i < v.size(); ++i)
+            if (v[i] < 0.0f)
+                input_error("{}: negative variance {} in {} at pixel ({}, {})", path, v[i], name,
+                            i % size_t(img.width), i / size_t(img.width));
+        out.assign(v.begin(), v.end());
+    };
 
     RgbImage out;
     out.path = path;
@@ -70,13 +86,8 @@ RgbImage rgb_image_from_exr(const ExrImage& img, const std::string& path) {
     for (int c = 0; c < 3; ++c) {
         const std::vector<float>& m = img.channel(kColour[c]);
         out.mean[size_t(c)].assign(m.begin(), m.end());
-        if (nvar == 0) continue;
-        const std::vector<float>& v = img.channel(kVariance[c]);
-        for (size_t i = 0; i < v.size(); ++i)
-            if (v[i] < 0.0f)
-                input_error("{}: negative variance {} in {} at pixel ({}, {})", path, v[i],
-                            kVariance[c], i % size_t(img.width), i / size_t(img.width));
-        out.var[size_t(c)].assign(v.begin(), v.end());
+        if (nvar == 3) read_variance(kVariance[c], out.var[size_t(c)]);
+        if (nsample == 3) read_variance(kSampleVariance[c], out.sample_var[size_t(c)]);
     }
     if (auto it = img.integers.find("twinpath:spp"); it != img.integers.end()) {
         if (it->second < 1) input_error("{}: twinpath:spp is {}, expected >= 1", path, it->second);

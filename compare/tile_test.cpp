@@ -14,22 +14,27 @@ TileTest tile_test(const Differences& d, int tile) {
     t.tiles_y = (d.height + tile - 1) / tile;
     const size_t k = size_t(t.tiles());
     const size_t pairs[3][2] = {{0, 1}, {0, 2}, {1, 2}};
-    std::array<std::vector<double>, 3> sum_d, sum_va, sum_vb, sum_va2, sum_vb2, sum_floor,
-        sum_cross;
-    for (size_t c = 0; c < 3; ++c)
-        for (auto* v : {&sum_d, &sum_va, &sum_vb, &sum_va2, &sum_vb2, &sum_floor, &sum_cross})
-            (*v)[c].assign(k, 0.0);
+    std::array<std::vector<double>, 3> sum_d, sum_floor, sum_cross;
+    std::array<std::vector<SideVariance>, 3> sum_a, sum_b;
+    for (size_t c = 0; c < 3; ++c) {
+        for (auto* v : {&sum_d, &sum_floor, &sum_cross}) (*v)[c].assign(k, 0.0);
+        sum_a[c].assign(k, SideVariance{});
+        sum_b[c].assign(k, SideVariance{});
+    }
+    auto add = [](SideVariance& s, double var, double lend) {
+        s.var += var;
+        s.var2 += var * var;
+        s.lend += lend;
+        s.lend2 += lend * lend;
+    };
     for (int y = 0; y < d.height; ++y)
         for (int x = 0; x < d.width; ++x) {
             const size_t i = size_t(y) * size_t(d.width) + size_t(x);
             const size_t j = size_t(y / tile) * size_t(t.tiles_x) + size_t(x / tile);
             for (size_t c = 0; c < 3; ++c) {
-                const double va = d.var_a[c][i], vb = d.var_b[c][i];
                 sum_d[c][j] += d.d[c][i];
-                sum_va[c][j] += va;
-                sum_vb[c][j] += vb;
-                sum_va2[c][j] += va * va;
-                sum_vb2[c][j] += vb * vb;
+                add(sum_a[c][j], d.var_a[c][i], d.lend_a[c][i]);
+                add(sum_b[c][j], d.var_b[c][i], d.lend_b[c][i]);
                 sum_floor[c][j] += d.floor[c][i];
                 sum_cross[c][j] += d.d[pairs[c][0]][i] * d.d[pairs[c][1]][i];
             }
@@ -40,8 +45,7 @@ TileTest tile_test(const Differences& d, int tile) {
         for (auto* v : {&sum_var, &sum_noise, &sum_welch}) (*v)[c].resize(k);
     for (size_t c = 0; c < 3; ++c)
         for (size_t j = 0; j < k; ++j) {
-            const PairVariance pv =
-                pair_variance(d.rule, sum_va[c][j], sum_vb[c][j], sum_va2[c][j], sum_vb2[c][j]);
+            const PairVariance pv = pair_variance(d.rule, sum_a[c][j], sum_b[c][j]);
             sum_noise[c][j] = pv.var;
             sum_var[c][j] = pv.var + sum_floor[c][j];
             sum_welch[c][j] = pv.welch;

@@ -1,9 +1,24 @@
 #include "render/film.h"
 
+#include <fmt/core.h>
+
 #include <algorithm>
 #include <limits>
 
 namespace tp {
+namespace {
+
+const char* const kColour[3] = {"R", "G", "B"};
+
+} // namespace
+
+std::string sample_variance_channel(int c) {
+    return fmt::format("sample_variance.{}", kColour[c]);
+}
+
+std::string batch_channel(uint32_t batch, int c) {
+    return fmt::format("batch{}.{}", batch, kColour[c]);
+}
 
 Film::Film(uint32_t width, uint32_t height, uint32_t batches)
     : width_(width), height_(height), batches_(batches), count_(size_t(width) * height, 0),
@@ -16,7 +31,7 @@ void Film::add_sample(uint32_t p, const glm::dvec3& x, uint32_t sample_index) {
     mean_[p] += delta / double(n);
     m2_[p] += delta * (x - mean_[p]);
     if (batches_ == 0) return;
-    BatchSum& b = batch_[size_t(p) * batches_ + sample_index % batches_];
+    BatchSum<glm::dvec3>& b = batch_[size_t(p) * batches_ + sample_index % batches_];
     b.sum += x;
     ++b.count;
 }
@@ -27,34 +42,25 @@ void Film::add_batch(uint32_t p, uint64_t nb, const glm::dvec3& sum, const glm::
     const glm::dvec3 mean_b = sum / double(nb);
     // The batch's own M2 from its sums; clamped because round-off can make it slightly < 0.
     const glm::dvec3 m2_b = glm::max(sum_sq - sum * mean_b, glm::dvec3(0.0));
-    const uint64_t na = count_[p];
-    const double n = double(na + nb);
-    const glm::dvec3 delta = mean_b - mean_[p];
-    mean_[p] += delta * (double(nb) / n);
-    m2_[p] += m2_b + delta * delta * (double(na) * double(nb) / n);
-    count_[p] = na + nb;
+    merge_moments(double(count_[p]), mean_[p], m2_[p], double(nb), mean_b, m2_b);
+    count_[p] += nb;
     if (batches_ == 0) return;
-    BatchSum& b = batch_[size_t(p) * batches_ + batch % batches_];
+    BatchSum<glm::dvec3>& b = batch_[size_t(p) * batches_ + batch % batches_];
     b.sum += sum;
     b.count += nb;
 }
 
 uint64_t Film::pixel_dof(uint32_t p) const {
     if (batches_ == 0) return count_[p] > 0 ? count_[p] - 1 : 0;
-    uint64_t filled = 0;
-    for (uint32_t b = 0; b < batches_; ++b) filled += batch_[size_t(p) * batches_ + b].count > 0;
+    const uint32_t filled = filled_batches(batches_of(p), batches_);
     return filled > 0 ? filled - 1 : 0;
 }
 
 void Film::merge(const Film& o) {
     for (size_t p = 0; p < count_.size(); ++p) {
-        const uint64_t na = count_[p], nb = o.count_[p];
-        if (nb == 0) continue;
-        const double n = double(na + nb);
-        const glm::dvec3 delta = o.mean_[p] - mean_[p];
-        mean_[p] += delta * (double(nb) / n);
-        m2_[p] += o.m2_[p] + delta * delta * (double(na) * double(nb) / n);
-        count_[p] = na + nb;
+        merge_moments(double(count_[p]), mean_[p], m2_[p], double(o.count_[p]), o.mean_[p],
+                      o.m2_[p]);
+        count_[p] += o.count_[p];
     }
     // Batch b of the union holds both films' samples of batch b (disjoint sample ranges).
     for (size_t i = 0; i < std::min(batch_.size(), o.batch_.size()); ++i) {
@@ -69,23 +75,7 @@ glm::dvec3 Film::variance_of_mean(uint32_t p) const {
         if (n < 2) return glm::dvec3(0.0);
         return m2_[p] / (double(n - 1) * double(n));
     }
-    const double k = double(pixel_dof(p) + 1);
-    if (k < 2.0) return glm::dvec3(0.0);
-    glm::dvec3 total(0.0);
-    uint64_t total_n = 0;
-    for (uint32_t b = 0; b < batches_; ++b) {
-        total += batch_[size_t(p) * batches_ + b].sum;
-        total_n += batch_[size_t(p) * batches_ + b].count;
-    }
-    const glm::dvec3 mean = total / double(total_n);
-    glm::dvec3 v(0.0);
-    for (uint32_t b = 0; b < batches_; ++b) {
-        const BatchSum& s = batch_[size_t(p) * batches_ + b];
-        if (s.count == 0) continue;
-        const glm::dvec3 d = (s.sum / double(s.count) - mean) * (double(s.count) / double(total_n));
-        v += d * d;
-    }
-    return v * (k / (k - 1.0));
+    return batch_variance_of_mean(batches_of(p), batches_);
 }
 
 uint64_t Film::variance_dof() const {
@@ -100,27 +90,40 @@ ExrImage Film::to_exr() const {
     img.width = int(width_);
     img.height = int(height_);
     const size_t n = size_t(width_) * height_;
-    const char* names[3] = {"R", "G", "B"};
-    const char* var_names[3] = {"variance.R", "variance.G", "variance.B"};
-    std::vector<float>*mean[3], *var[3];
+    auto plane = [&](const std::string& name) {
+        std::vector<float>& v = img.channels[name];
+        v.resize(n);
+        return v.data();
+    };
+    float *mean[3], *var[3];
     for (int c = 0; c < 3; ++c) {
-        mean[c] = &img.channels[names[c]];
-        var[c] = &img.channels[var_names[c]];
-        mean[c]->resize(n);
-        var[c]->resize(n);
+        mean[c] = plane(kColour[c]);
+        var[c] = plane(std::string("variance.") + kColour[c]);
     }
     for (size_t i = 0; i < n; ++i) {
         const glm::dvec3 v = variance_of_mean(uint32_t(i));
         for (int c = 0; c < 3; ++c) {
-            (*mean[c])[i] = float(mean_[i][c]);
-            (*var[c])[i] = float(v[c]);
+            mean[c][i] = float(mean_[i][c]);
+            var[c][i] = float(v[c]);
         }
     }
     img.strings["twinpath:variance_estimator"] = batches_ ? "batches" : "samples";
+    if (batches_ == 0) return img;
     // For the samples estimator readers take spp - 1 (compare/rgb_image.h); without a pixel of
     // two filled batches there is no estimate and nothing to record.
-    if (batches_ && variance_dof() > 0)
-        img.integers["twinpath:variance_dof"] = int64_t(variance_dof());
+    if (variance_dof() > 0) img.integers["twinpath:variance_dof"] = int64_t(variance_dof());
+    for (int c = 0; c < 3; ++c) {
+        float* s2 = plane(sample_variance_channel(c));
+        for (size_t i = 0; i < n; ++i)
+            s2[i] = count_[i] > 1 ? float(m2_[i][c] / double(count_[i] - 1)) : 0.0f;
+        for (uint32_t b = 0; b < batches_; ++b) {
+            float* mean_b = plane(batch_channel(b, c));
+            for (size_t i = 0; i < n; ++i) {
+                const BatchSum<glm::dvec3>& s = batches_of(uint32_t(i))[b];
+                mean_b[i] = s.count > 0 ? float(s.sum[c] / double(s.count)) : 0.0f;
+            }
+        }
+    }
     return img;
 }
 

@@ -1,7 +1,7 @@
 // Double-precision film: per pixel and channel the sample count, running mean and sum of
 // squared deviations (Welford 1962), so that mean and variance keep full precision at 10^6
 // samples. Batches from another accumulator (the GPU's per-pixel sums) merge with the
-// pairwise update of Chan, Golub & LeVeque (1979).
+// pairwise update of Chan, Golub & LeVeque (1979), render/moments.h.
 //
 // The variance of the mean comes from one of two estimators (docs/sampling.md):
 // - samples: the unbiased sample variance over n, n - 1 degrees of freedom; valid when a
@@ -9,21 +9,26 @@
 // - batches: sample s goes to batch s mod K, each batch an independent randomization of a
 //   low-discrepancy sequence (the Sobol sampler, shared/rng.h). Within a batch the samples are
 //   not independent, so their spread says nothing about the error of their mean; the batch
-//   means are independent, and the random-group estimator (Wolter, "Introduction to Variance
-//   Estimation", 2nd ed., 2007, ch. 2) with batch sizes n_b, N = sum n_b over the K' batches
-//   that have samples,
-//       Var(mean) = K' / (K' - 1) * sum_b (n_b / N)^2 (mean_b - mean)^2,
-//   is the sample variance of the batch means over K' when the n_b are equal, with K' - 1
-//   degrees of freedom.
+//   means are independent, and the random-group estimator (render/moments.h) over the K'
+//   batches that have samples estimates it with K' - 1 degrees of freedom.
 #pragma once
 
 #include "image/exr_io.h"
+#include "render/moments.h"
 #include "shared/lang.h"
 
 #include <cstdint>
+#include <string>
 #include <vector>
 
 namespace tp {
+
+// The channels a batch-estimated film writes besides R, G, B and variance.R/G/B
+// (DESIGN.md, "Files"; docs/sampling.md): the unbiased sample variance of the pixel's samples,
+// an estimate of the variance of one sample's marginal distribution, and the mean of each
+// batch. c is 0, 1, 2 for R, G, B.
+std::string sample_variance_channel(int c);       // "sample_variance.R"
+std::string batch_channel(uint32_t batch, int c); // "batch3.G"
 
 class Film {
   public:
@@ -56,23 +61,24 @@ class Film {
     // pixels that have an estimate, 0 when none has.
     uint64_t variance_dof() const;
 
-    // R, G, B and variance.R/G/B channels, float32 (DESIGN.md, "Image output"), the estimator
-    // in twinpath:variance_estimator ("samples" or "batches") and, for batches,
-    // twinpath:variance_dof.
+    // R, G, B and variance.R/G/B channels, float32 (DESIGN.md, "Files"), the estimator in
+    // twinpath:variance_estimator ("samples" or "batches"); for batches also
+    // twinpath:variance_dof, sample_variance.R/G/B and batchB.R/G/B for B < K, so that
+    // compare can borrow a per-sample variance and merge can rebuild the batch estimate of
+    // several parts exactly (docs/sampling.md).
     ExrImage to_exr() const;
 
   private:
-    struct BatchSum {
-        glm::dvec3 sum{0.0};
-        uint64_t count = 0;
-    };
     uint64_t pixel_dof(uint32_t p) const;
+    const BatchSum<glm::dvec3>* batches_of(uint32_t p) const {
+        return &batch_[size_t(p) * batches_];
+    }
 
     uint32_t width_ = 0, height_ = 0, batches_ = 0;
     std::vector<uint64_t> count_;
     std::vector<glm::dvec3> mean_;
     std::vector<glm::dvec3> m2_;
-    std::vector<BatchSum> batch_; // width * height * batches, pixel-major
+    std::vector<BatchSum<glm::dvec3>> batch_; // width * height * batches, pixel-major
 };
 
 } // namespace tp

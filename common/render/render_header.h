@@ -25,6 +25,7 @@ constexpr const char* kCamera = "twinpath:camera";        // camera_description(
 constexpr const char* kSettings = "twinpath:settings";    // settings_description()
 constexpr const char* kSampler = "twinpath:sampler";      // random, sobol
 constexpr const char* kVarianceEstimator = "twinpath:variance_estimator"; // Film::to_exr
+constexpr const char* kVarianceDof = "twinpath:variance_dof";             // batches: K' - 1
 constexpr const char* kRenderTime = "twinpath:render_time_s"; // double; merged: the parts' sum
 constexpr const char* kParts = "twinpath:parts";              // merge: one line per part
 constexpr const char* kIntegrator = "twinpath:integrator";    // debug views only
@@ -35,6 +36,7 @@ constexpr const char* kIntegrator = "twinpath:integrator";    // debug views onl
 // (the random sampler, shared/rng.h); "batches" (the Sobol sampler): from the means of
 // independent batches, with twinpath:variance_dof degrees of freedom.
 constexpr const char* kVarianceFromSamples = "samples";
+constexpr const char* kVarianceFromBatches = "batches";
 
 // "SEED:BEGIN-END" entries joined by ",", sorted by seed then begin, with touching ranges of one
 // seed joined into one ("0:0-64,0:64-128" is written "0:0-128").

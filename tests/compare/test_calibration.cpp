@@ -59,6 +59,29 @@ void check_valid(const std::string& name, const std::vector<double>& p, double a
     CHECK(k <= binomial_interval99(p.size(), alpha).hi);
 }
 
+struct Ratio {
+    uint32_t spp_a, spp_b;
+    size_t trials;
+};
+
+// A at ratio.spp_a against B at ratio.spp_b, both with `batches` (0: the samples estimator):
+// every part of the test at or below alpha.
+void check_unequal_spp(Noise noise, const Ratio& ratio, uint32_t batches, uint64_t seed) {
+    SyntheticSpec spec;
+    spec.noise = noise;
+    spec.spp = ratio.spp_a;
+    spec.batches = batches;
+    spec.correlated_channels = noise != Noise::Gaussian;
+    const TrialPValues t = run_trials(spec, ratio.trials, false, seed, ratio.spp_b);
+    INFO("noise model " << int(noise) << ", " << ratio.spp_a << " against " << ratio.spp_b
+                        << " spp, " << batches << " batches");
+    for (double alpha : {0.05, 0.01}) {
+        check_valid("whole test", t.overall, alpha);
+        check_valid("local (Holm over pixel-channels)", t.local, alpha);
+        check_valid("global (tile chi-square)", t.global, alpha);
+    }
+}
+
 } // namespace
 
 TEST_CASE("size, two-sample, Gaussian noise: the whole test and both parts are exact",
@@ -125,28 +148,10 @@ TEST_CASE("size, two-sample at unequal spp (1:8, 1:64), heavy-tailed noise: vali
     // rejected in 100% of these trials. Gaussian noise is checked too, where the borrowed
     // variance (differences.h) only makes the test conservative. The bound is the upper end of
     // the 99% binomial interval (valid: at or below alpha).
-    struct Ratio {
-        uint32_t spp_a, spp_b;
-        size_t trials;
-    };
     for (Noise noise :
          {Noise::Gaussian, Noise::Lognormal, Noise::Pareto, Noise::Firefly, Noise::Caustic})
-        for (const Ratio ratio : {Ratio{16, 128, 100}, Ratio{8, 512, 60}}) {
-            SyntheticSpec spec;
-            spec.noise = noise;
-            spec.spp = ratio.spp_a;
-            spec.correlated_channels = noise != Noise::Gaussian;
-            const TrialPValues t =
-                run_trials(spec, ratio.trials, false,
-                           130000 + 10000 * uint64_t(noise) + ratio.spp_b, ratio.spp_b);
-            INFO("noise model " << int(noise) << ", " << ratio.spp_a << " against " << ratio.spp_b
-                                << " spp");
-            for (double alpha : {0.05, 0.01}) {
-                check_valid("whole test", t.overall, alpha);
-                check_valid("local (Holm over pixel-channels)", t.local, alpha);
-                check_valid("global (tile chi-square)", t.global, alpha);
-            }
-        }
+        for (const Ratio ratio : {Ratio{16, 128, 100}, Ratio{8, 512, 60}})
+            check_unequal_spp(noise, ratio, 0, 130000 + 10000 * uint64_t(noise) + ratio.spp_b);
 }
 
 TEST_CASE("size, reference mode: exact for Gaussian and heavy-tailed noise",
@@ -199,26 +204,17 @@ TEST_CASE("size with the batch estimator (8 stratified batches): Gaussian exact,
     }
 }
 
-TEST_CASE("size with the batch estimator at unequal spp (1:8), heavy-tailed noise: valid",
+TEST_CASE("size with the batch estimator at unequal spp (1:8, 1:64), heavy-tailed noise: valid",
           "[compare][calibration][batches][unequal-spp]") {
-    // 16 against 128 spp, both with 8 stratified batches: B's batches hold 16 samples, A's 2.
-    // The borrowing rule (differences.h) compares per-sample variances n Var(mean), which for
-    // stratified batches fall with n, so B's borrowed variance is the smaller one more often
-    // than with independent samples; the test must stay valid all the same. Not caustic
-    // noise: there B's stratified batches meet their rare samples so regularly that n Var(mean)
-    // understates the per-sample variance A needs to borrow, and the whole test rejects in
-    // every trial (docs/sampling.md, "Limits").
-    for (Noise noise : {Noise::Gaussian, Noise::Lognormal, Noise::Firefly}) {
-        SyntheticSpec spec;
-        spec.noise = noise;
-        spec.batches = 8;
-        spec.correlated_channels = noise != Noise::Gaussian;
-        const TrialPValues t = run_trials(spec, 100, false, 330000 + 10000 * uint64_t(noise), 128);
-        INFO("noise model " << int(noise));
-        for (double alpha : {0.05, 0.01}) {
-            check_valid("whole test", t.overall, alpha);
-            check_valid("local (Holm over pixel-channels)", t.local, alpha);
-            check_valid("global (tile chi-square)", t.global, alpha);
-        }
-    }
+    // The unequal-spp case above with 8 stratified batches on both sides: A at 16 spp (2
+    // samples per batch) against B at 128, and A at 8 against B at 512. B's n Var(mean) falls
+    // with n for stratified batches, so A borrows B's sample_variance instead (differences.h),
+    // the spread of B's samples, which estimates the variance of one sample however the
+    // samples are stratified. Caustic noise is the hard case: B's batches meet their rare
+    // samples so regularly that n Var(mean) is far below that spread; borrowing n Var(mean)
+    // rejects every trial. The bound is the upper end of the 99% binomial interval.
+    for (Noise noise :
+         {Noise::Gaussian, Noise::Lognormal, Noise::Pareto, Noise::Firefly, Noise::Caustic})
+        for (const Ratio ratio : {Ratio{16, 128, 100}, Ratio{8, 512, 60}})
+            check_unequal_spp(noise, ratio, 8, 330000 + 10000 * uint64_t(noise) + ratio.spp_b);
 }

@@ -199,3 +199,28 @@ TEST_CASE("unequal spp: the image with fewer samples borrows the larger per-samp
         (64.0 * (0.004 * 0.004 + 0.0005 * 0.0005) + 0.004 * 0.004 + 0.0005 * 0.0005) / 127.0;
     CHECK(t.z[0][0] == Approx(equivalent_normal(0.2 / std::sqrt(0.0405), 0.0405 * 0.0405 / welch)));
 }
+
+TEST_CASE("unequal spp: a batch-estimated image lends its sample variance, not n var",
+          "[compare][units][unequal-spp][batches]") {
+    // B: 128 spp of a stratified sampler, variance of the mean 0.0005 from 8 batches (dof 7),
+    // so n var = 0.064, while the spread of its samples, sample_variance, is 0.512. A (16 spp,
+    // variance 0.01) borrows 0.512 / 16 = 0.032 with B's n - 1 = 127 dof, as in the case
+    // above where B's samples are independent and n var = 0.512. Without sample_variance B
+    // would lend 8 * 0.0005 = 0.004 < 0.01 and A would keep its own.
+    const RgbImage a = flat_image(1, 1, 1.0, 0.01, 16);
+    RgbImage b = flat_image(1, 1, 0.9, 0.0005, 128);
+    b.variance_dof = 7;
+    const Differences own = compute_differences(a, b, 0.0);
+    CHECK(own.noise[0][0] == Approx(0.0105));
+    CHECK(own.variance_borrowed == 0);
+    for (size_t c = 0; c < 3; ++c) b.sample_var[c] = {0.512};
+    const Differences d = compute_differences(a, b, 0.0);
+    CHECK(d.rule.borrower == VarianceRule::A);
+    CHECK(d.noise[0][0] == Approx(0.032 + 0.0005));
+    CHECK(d.welch[0][0] == Approx(0.032 * 0.032 / 127.0 + 0.0005 * 0.0005 / 7.0));
+    CHECK(d.variance_borrowed == 3);
+    // B's own side keeps its batch estimate with its 7 dof; swapped, the same numbers.
+    const Differences s = compute_differences(b, a, 0.0);
+    CHECK(s.noise[0][0] == Approx(0.032 + 0.0005));
+    CHECK(s.welch[0][0] == Approx(0.032 * 0.032 / 127.0 + 0.0005 * 0.0005 / 7.0));
+}

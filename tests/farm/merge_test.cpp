@@ -2,6 +2,7 @@
 // all samples computed directly, merged CPU parts against one render, and every refusal.
 #include "compare/merge.h"
 #include "image/exr_io.h"
+#include "render/film.h"
 #include "render/render_header.h"
 #include "split_check.h"
 #include "support/test_paths.h"
@@ -105,6 +106,76 @@ TEST_CASE("CPU parts tiling samples 0 to 2N merge into the 2N render", "[farm]")
     const std::string b = render_part(dir, "b.exr", "--spp 4 --sample-offset 4");
     const std::string single = render_part(dir, "single.exr", "--spp 8");
     tp::test::check_merge_equals_single(dir, {b, a}, single);
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("Sobol parts tiling samples 0 to 2N merge into the 2N render", "[farm]") {
+    // Batch b of the whole holds samples s = b mod 8 of both parts (docs/sampling.md): 12 spp
+    // from 0 fill batches 0-3 twice and 4-7 once, 12 from 12 the other way round, so the merge
+    // must count each part's batches from its range to rebuild the 24-spp batch estimate.
+    const std::string dir = tp::test::temp_dir("merge-sobol");
+    const std::string a = render_part(dir, "a.exr", "--sampler sobol --spp 12");
+    const std::string b = render_part(dir, "b.exr", "--sampler sobol --spp 12 --sample-offset 12");
+    const std::string single = render_part(dir, "single.exr", "--sampler sobol --spp 24");
+    tp::test::check_merge_equals_single(dir, {b, a}, single);
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("Sobol parts of two seeds merge batch by batch", "[farm]") {
+    // 8 spp of seeds 1 and 2: one sample in each batch of each part. Independent seeds are
+    // independent randomizations, so batch b of the whole is the two parts' batch b, mean
+    // (x_1b + x_2b) / 2, and the variance of the mean is the random-group estimator over those
+    // 8 batch means (render/moments.h), recomputed here from the parts' files.
+    const std::string dir = tp::test::temp_dir("merge-sobol-seeds");
+    const std::string a = render_part(dir, "a.exr", "--sampler sobol --spp 8 --seed 1");
+    const std::string b = render_part(dir, "b.exr", "--sampler sobol --spp 8 --seed 2");
+    const std::string merged = dir + "/merged.exr";
+    const auto r = run(
+        twinpath("merge " + shell_quote(a) + " " + shell_quote(b) + " -o " + shell_quote(merged)));
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    const ExrImage m = read_exr(merged), pa = read_exr(a), pb = read_exr(b);
+    CHECK(m.strings.at(header::kVarianceEstimator) == "batches");
+    CHECK(m.integers.at(header::kVarianceDof) == 7);
+    CHECK(m.integers.at(header::kSpp) == 16);
+    size_t varied = 0;
+    for (int c = 0; c < 3; ++c)
+        for (size_t i = 0; i < m.channel("R").size(); ++i) {
+            double mean_b[8], mean = 0;
+            for (uint32_t k = 0; k < 8; ++k) {
+                mean_b[k] = (double(pa.channel(batch_channel(k, c))[i]) +
+                             double(pb.channel(batch_channel(k, c))[i])) /
+                            2;
+                mean += mean_b[k] / 8;
+            }
+            double v = 0;
+            for (double x : mean_b) v += (x - mean) * (x - mean) / 64;
+            v *= 8.0 / 7.0;
+            const std::string name = std::string(1, "RGB"[c]);
+            // Float32 inputs and outputs: 1e-6 relative of the mean (a few roundings of
+            // 2^-24), and of the variance through the squared differences of such means.
+            CHECK(m.channel(name)[i] == Approx(mean).epsilon(1e-6).margin(1e-12));
+            CHECK(m.channel("variance." + name)[i] ==
+                  Approx(v).epsilon(1e-4).margin(1e-6 * mean * mean));
+            varied += v > 0;
+        }
+    CHECK(varied > m.channel("R").size());
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("merge refuses mixing samplers and Sobol parts without their batch channels", "[farm]") {
+    const std::string dir = tp::test::temp_dir("merge-sobol-refuse");
+    const std::string random = render_part(dir, "random.exr", "--spp 2");
+    const std::string sobol =
+        render_part(dir, "sobol.exr", "--sampler sobol --spp 2 --sample-offset 2");
+    CHECK_THAT(merge_error({random, sobol}),
+               Catch::Contains("sobol.exr") && Catch::Contains("twinpath:settings"));
+    const std::string other = render_part(dir, "other.exr", "--sampler sobol --spp 2");
+    ExrImage img = read_exr(other);
+    img.channels.erase("batch3.G");
+    write_exr(dir + "/old.exr", img);
+    CHECK_THAT(merge_error({sobol, dir + "/old.exr"}),
+               Catch::Contains("old.exr") && Catch::Contains("batch3.G"));
     std::filesystem::remove_all(dir);
 }
 

@@ -16,6 +16,35 @@ namespace {
 // One float32 rounding: relative error at most 2^-24 (unit roundoff, round to nearest).
 constexpr double kRound = 5.9604644775390625e-08;
 
+// The batch means and the batch variance of pixel i, channel c, merged against single (bounds
+// in check_merged_equals_single); returns the largest bound.
+double check_batches(const ExrImage& merged, const ExrImage& single, const char* c, size_t i) {
+    std::vector<double> mean_b;
+    for (uint32_t b = 0; single.has(fmt::format("batch{}.{}", b, c)); ++b)
+        mean_b.push_back(single.channel(fmt::format("batch{}.{}", b, c))[i]);
+    REQUIRE(mean_b.size() == 8);
+    const double n = double(single.integers.at("twinpath:spp")), k = double(mean_b.size());
+    double max_m = 0, mean = 0;
+    for (double x : mean_b) {
+        max_m = std::max(max_m, std::fabs(x));
+        mean += x / k; // every batch holds n / 8 samples in the tests that call this
+    }
+    REQUIRE(std::fmod(n, k) == 0.0);
+    double largest = 0;
+    for (uint32_t b = 0; b < mean_b.size(); ++b) {
+        const double tol = 2 * 3 * kRound * std::fabs(mean_b[b]);
+        CHECK(std::fabs(double(merged.channel(fmt::format("batch{}.{}", b, c))[i]) - mean_b[b]) <=
+              tol);
+        largest = std::max(largest, tol);
+    }
+    const double e = 2 * 3 * kRound * max_m, var = single.channel(std::string("variance.") + c)[i];
+    double moved = 0;
+    for (double x : mean_b) moved += 2 * std::fabs(x - mean) * 2 * e / (k * k);
+    const double tol_var = 2 * (k / (k - 1) * moved + 2 * kRound * var);
+    CHECK(std::fabs(double(merged.channel(std::string("variance.") + c)[i]) - var) <= tol_var);
+    return std::max(largest, tol_var);
+}
+
 } // namespace
 
 std::string render_part(const std::string& dir, const std::string& name, const std::string& args) {
@@ -84,15 +113,26 @@ void check_merged_equals_single(const std::string& merged, const std::vector<std
     //         sum, and by sum n_i 2 |m_i - m| (|e_i| + |e_m|) with e <= 2^-24 max |m_j| through
     //         the means; divided by N (N - 1), plus one rounding of each file.
     // Doubled for the second-order terms and the double accumulation.
+    //
+    // Batch-estimated renders (--sampler sobol, docs/sampling.md) pool sample_variance.* the
+    // same way with M2 = s^2 (n - 1) and no division by N. Their batch means are weighted
+    // averages like the mean (3 * 2^-24 relative). variance.* comes from the batch means: each
+    // off by e <= 2 * 3 * 2^-24 max_b |m_b| and their mean by as much, it moves by at most
+    // K'/(K'-1) sum_b w_b^2 2 |m_b - m| 2e, plus one rounding of each file.
+    const bool batches = s.strings.at("twinpath:variance_estimator") == "batches";
+    CHECK(m.strings.at("twinpath:variance_estimator") ==
+          s.strings.at("twinpath:variance_estimator"));
+    if (batches)
+        CHECK(m.integers.at("twinpath:variance_dof") == s.integers.at("twinpath:variance_dof"));
     double largest = 0;
     for (const char* c : {"R", "G", "B"}) {
-        const std::string vc = std::string("variance.") + c;
+        const std::string vc = std::string(batches ? "sample_variance." : "variance.") + c;
         for (size_t i = 0; i < s.channel(c).size(); ++i) {
             double N = 0, within = 0, max_m = 0, sum_nm = 0;
             for (const ExrImage& part : p) {
                 const double n = double(part.integers.at("twinpath:spp"));
                 N += n;
-                within += double(part.channel(vc)[i]) * n * (n - 1);
+                within += double(part.channel(vc)[i]) * (batches ? n - 1 : n * (n - 1));
                 max_m = std::max(max_m, std::fabs(double(part.channel(c)[i])));
                 sum_nm += n * double(part.channel(c)[i]);
             }
@@ -102,12 +142,13 @@ void check_merged_equals_single(const std::string& merged, const std::vector<std
                           std::fabs(double(part.channel(c)[i]) - sum_nm / N);
             const double mean = s.channel(c)[i], var = s.channel(vc)[i];
             const double tol_mean = 2 * 3 * kRound * std::fabs(mean);
-            const double tol_var =
-                2 * ((kRound * within + 4 * kRound * max_m * spread) / (N * (N - 1)) +
-                     2 * kRound * var);
+            const double tol_var = 2 * ((kRound * within + 4 * kRound * max_m * spread) /
+                                            ((batches ? 1 : N) * (N - 1)) +
+                                        2 * kRound * var);
             CHECK(std::fabs(double(m.channel(c)[i]) - mean) <= tol_mean);
             CHECK(std::fabs(double(m.channel(vc)[i]) - var) <= tol_var);
             largest = std::max({largest, tol_mean, tol_var});
+            if (batches) largest = std::max(largest, check_batches(m, s, c, i));
         }
     }
     const auto e =

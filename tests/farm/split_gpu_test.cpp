@@ -18,11 +18,17 @@ TEST_CASE("render --sample-offset shifts the samples of the Vulkan compute engin
 }
 
 TEST_CASE("Vulkan parts tiling samples 0 to 2N merge into the 2N render", "[farm][gpu]") {
-    const std::string dir = tp::test::temp_dir("merge-vk");
-    const std::string vk = "--backend vulkan --vk-mode compute ";
-    const std::string a = render_part(dir, "a.exr", vk + "--spp 3");
-    const std::string b = render_part(dir, "b.exr", vk + "--spp 3 --sample-offset 3");
-    const std::string single = render_part(dir, "single.exr", vk + "--spp 6");
+    // With the Sobol sampler 12 + 12 spp fill each of the 8 batches 3 times, 2 + 1 from the
+    // parts in either order (merge_test.cpp).
+    const std::string sampler = GENERATE(as<std::string>(), "random", "sobol");
+    const std::string dir = tp::test::temp_dir("merge-vk-" + sampler);
+    const std::string vk = "--backend vulkan --vk-mode compute --sampler " + sampler + " ";
+    const uint32_t n = sampler == "sobol" ? 12 : 3;
+    const std::string a = render_part(dir, "a.exr", vk + "--spp " + std::to_string(n));
+    const std::string b = render_part(
+        dir, "b.exr", vk + "--spp " + std::to_string(n) + " --sample-offset " + std::to_string(n));
+    const std::string single =
+        render_part(dir, "single.exr", vk + "--spp " + std::to_string(2 * n));
     tp::test::check_merge_equals_single(dir, {a, b}, single);
     std::filesystem::remove_all(dir);
 }

@@ -165,6 +165,15 @@ TEST_CASE("film: the batch estimator is the variance of the batch means", "[film
     const tp::ExrImage img = f.to_exr();
     CHECK(img.strings.at("twinpath:variance_estimator") == "batches");
     CHECK(img.integers.at("twinpath:variance_dof") == k - 1);
+    // What compare borrows and merge rebuilds from (docs/sampling.md): the sample variance of
+    // all 40 samples, M2 / (n - 1), and each batch's mean, both rounded once to float32.
+    const TwoPass all = two_pass(x);
+    CHECK(img.channel(tp::sample_variance_channel(0))[0] ==
+          Approx(double(all.m2 / (x.size() - 1))).epsilon(1e-7));
+    for (uint32_t b = 0; b < k; ++b)
+        CHECK(img.channel(tp::batch_channel(b, 2))[0] == Approx(double(m[b])).epsilon(1e-7));
+    CHECK(img.channels.size() == 6 + 3 + 3 * k);
+    CHECK_FALSE(tp::Film(1, 1).to_exr().has(tp::sample_variance_channel(0)));
 
     SECTION("the GPU's per-batch sums give the same film") {
         tp::Film g(1, 1, k);
