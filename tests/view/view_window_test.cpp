@@ -144,9 +144,13 @@ TEST_CASE("a scripted camera move restarts the accumulation; S saves EXR and PNG
 }
 
 TEST_CASE("view's C compares with the CPU reference and a click diffs a pixel's paths", "[view]") {
-    const fs::path dir = tp::test::temp_dir("view-compare");
+    // Both samplers: with sobol the CPU half renders with it too, and both sides carry the
+    // batch estimate of the variance (docs/sampling.md).
+    const std::string sampler = GENERATE(as<std::string>(), "random", "sobol");
+    const fs::path dir = tp::test::temp_dir("view-compare-" + sampler);
     const auto v = view_in_window(
-        dir, "cornell --width 32 --height 24 --seed 5 --frames 6 --spp-per-frame 4 --script " +
+        dir, "cornell --width 32 --height 24 --seed 5 --sampler " + sampler +
+                 " --frames 6 --spp-per-frame 4 --script " +
                  shell_quote(script(dir, "0 key H\n1 key C\n4 key C\n4 click 12 20\n").string()));
     INFO(v.out);
     REQUIRE(v.exit_code == 0);
