@@ -101,24 +101,20 @@ vec3 path_radiance(uint x, uint y, uint sample_index, INOUT(RayCounts) rays) {
         vec3 shadow_contrib = vec3(0.0f);
         if (features_sample_lights(scene_features) && !material_is_delta_in(scene_features, mat) &&
             params.light_count > 0u) {
-            uint slot = alias_slot_from_bits(rng_bounce_bits(key, bounce, RNG_LIGHT_SLOT),
-                                             params.light_count);
+            uvec2 pick = rng_bounce2_bits(key, bounce, RNG_LIGHT_SLOT); // slot and alias coin
+            uint slot = alias_slot_from_bits(pick.x, params.light_count);
             AliasEntry e = light_table[slot];
-            uint li = alias_resolve(slot, e.prob, e.alias, rng_bounce(key, bounce, RNG_LIGHT_COIN));
+            uint li = alias_resolve(slot, e.prob, e.alias, uint_to_unit_float(pick.y));
             float sel_pdf = scene_light_selection_pdf(li);
-            vec2 u =
-                vec2(rng_bounce(key, bounce, RNG_LIGHT_U), rng_bounce(key, bounce, RNG_LIGHT_V));
-            LightSample ls =
-                scene_sample_light(li, sp.p, u, rng_bounce_bits(key, bounce, RNG_ENV_SLOT),
-                                   rng_bounce(key, bounce, RNG_ENV_COIN));
+            vec2 u = rng_bounce2(key, bounce, RNG_LIGHT_U);
+            uvec2 env = rng_bounce2_bits(key, bounce, RNG_ENV_SLOT); // pixel slot and coin
+            LightSample ls = scene_sample_light(li, sp.p, u, env.x, uint_to_unit_float(env.y));
             PATH_LOG(rec.light = li; rec.light_wi = ls.wi; rec.light_pdf = sel_pdf * ls.pdf;
-                     rec.mis_light = 1.0f; rec.rng[RNG_LIGHT_SLOT] = uint_to_unit_float(
-                                               rng_bounce_bits(key, bounce, RNG_LIGHT_SLOT));
-                     rec.rng[RNG_LIGHT_COIN] = rng_bounce(key, bounce, RNG_LIGHT_COIN);
+                     rec.mis_light = 1.0f; rec.rng[RNG_LIGHT_SLOT] = uint_to_unit_float(pick.x);
+                     rec.rng[RNG_LIGHT_COIN] = uint_to_unit_float(pick.y);
                      rec.rng[RNG_LIGHT_U] = u.x; rec.rng[RNG_LIGHT_V] = u.y;
-                     rec.rng[RNG_ENV_SLOT] =
-                         uint_to_unit_float(rng_bounce_bits(key, bounce, RNG_ENV_SLOT));
-                     rec.rng[RNG_ENV_COIN] = rng_bounce(key, bounce, RNG_ENV_COIN));
+                     rec.rng[RNG_ENV_SLOT] = uint_to_unit_float(env.x);
+                     rec.rng[RNG_ENV_COIN] = uint_to_unit_float(env.y));
             if (ls.pdf > 0.0f && dot(ls.wi, sp.ng) > 0.0f) {
                 vec3 f = bsdf_eval_in(scene_features, mat, sp.ns, wo, ls.wi);
                 PATH_LOG(rec.light_f = f);
@@ -149,15 +145,14 @@ vec3 path_radiance(uint x, uint y, uint sample_index, INOUT(RayCounts) rays) {
             }
         }
 
-        // 4. Scattering.
-        BsdfSample bs = bsdf_sample_in(
-            scene_features, mat, sp.ns, wo, rng_bounce(key, bounce, RNG_LOBE),
-            vec2(rng_bounce(key, bounce, RNG_DIR_U), rng_bounce(key, bounce, RNG_DIR_V)));
-        PATH_LOG(rec.rng[RNG_LOBE] = rng_bounce(key, bounce, RNG_LOBE);
-                 rec.rng[RNG_DIR_U] = rng_bounce(key, bounce, RNG_DIR_U);
-                 rec.rng[RNG_DIR_V] = rng_bounce(key, bounce, RNG_DIR_V); rec.lobe = bs.lobe;
-                 rec.wi = bs.wi; rec.bsdf_pdf = bs.pdf; rec.bsdf_weight = bs.weight;
-                 rec.radiance = L; rec.throughput = T);
+        // 4. Scattering. The lobe choice shares a Sobol pair with the roulette (rng.h).
+        vec2 lobe_roulette = rng_bounce2(key, bounce, RNG_LOBE);
+        vec2 dir_uv = rng_bounce2(key, bounce, RNG_DIR_U);
+        BsdfSample bs = bsdf_sample_in(scene_features, mat, sp.ns, wo, lobe_roulette.x, dir_uv);
+        PATH_LOG(rec.rng[RNG_LOBE] = lobe_roulette.x; rec.rng[RNG_DIR_U] = dir_uv.x;
+                 rec.rng[RNG_DIR_V] = dir_uv.y; rec.lobe = bs.lobe; rec.wi = bs.wi;
+                 rec.bsdf_pdf = bs.pdf; rec.bsdf_weight = bs.weight; rec.radiance = L;
+                 rec.throughput = T);
         bool scatter = bs.lobe != LOBE_NONE && scatter_is_consistent(sp.ng, wo, bs.wi, bs.lobe);
         Ray next = ray;
         if (TRACE_SHADOW_AFTER_SCATTER) {
@@ -177,10 +172,9 @@ vec3 path_radiance(uint x, uint y, uint sample_index, INOUT(RayCounts) rays) {
         T *= bs.weight;
         prev_specular = (bs.lobe & LOBE_SPECULAR) != 0u;
         prev_pdf = bs.pdf;
-        PATH_LOG(rec.rng[RNG_ROULETTE] = rng_bounce(key, bounce, RNG_ROULETTE);
+        PATH_LOG(rec.rng[RNG_ROULETTE] = lobe_roulette.y;
                  rec.roulette_q = roulette_survival(T, bounce + 1u, params.min_depth));
-        if (!roulette_apply(T, bounce + 1u, params.min_depth,
-                            rng_bounce(key, bounce, RNG_ROULETTE))) {
+        if (!roulette_apply(T, bounce + 1u, params.min_depth, lobe_roulette.y)) {
             PATH_LOG(rec.throughput = T; path_log_emit(rec, TERM_ROULETTE));
             break;
         }

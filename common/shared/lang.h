@@ -13,7 +13,6 @@
 #include <cstddef>
 #include <cstdint>
 #include <glm/glm.hpp>
-#include <glm/integer.hpp>
 
 namespace tp {
 using vec2 = glm::vec2;
@@ -30,7 +29,6 @@ using uint = std::uint32_t;
 using glm::abs;
 using glm::acos;
 using glm::atan;
-using glm::bitfieldReverse;
 using glm::clamp;
 using glm::cos;
 using glm::cross;
@@ -59,6 +57,16 @@ using glm::sin;
 using glm::sqrt;
 using glm::tan;
 using glm::uintBitsToFloat;
+
+// GLSL's bitfieldReverse of a 32-bit word (bit n moves to bit 31 - n): the bytes swapped, then
+// the bits of each byte reversed in three mask-and-shift steps. GLM's version takes five such
+// steps (16-, 8-, 4-, 2- and 1-bit blocks); the byte swap does the first two in one instruction.
+inline uint bitfieldReverse(uint x) {
+    x = __builtin_bswap32(x);
+    x = ((x >> 4u) & 0x0F0F0F0Fu) | ((x & 0x0F0F0F0Fu) << 4u);
+    x = ((x >> 2u) & 0x33333333u) | ((x & 0x33333333u) << 2u);
+    return ((x >> 1u) & 0x55555555u) | ((x & 0x55555555u) << 1u);
+}
 
 // The high 32 bits of the 64-bit product a * b: GLSL's umulExtended, here through uint64.
 inline uint umul_hi(uint a, uint b) {

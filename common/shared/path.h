@@ -69,8 +69,8 @@ inline Ray spawn_ray(vec3 p, vec3 p_error, vec3 ng, vec3 d, float slack) {
 inline Ray camera_ray(Camera cam, RngKey key, uint x, uint y) {
     Ray r;
     r.origin = cam.eye;
-    r.dir = camera_direction(cam, float(x) + rng_get(key, RNG_PIXEL_X),
-                             float(y) + rng_get(key, RNG_PIXEL_Y));
+    vec2 jitter = rng_get2(key, RNG_PIXEL_X);
+    r.dir = camera_direction(cam, float(x) + jitter.x, float(y) + jitter.y);
     r.tmax = FLOAT_MAX;
     r.pad0 = 0u;
     return r;

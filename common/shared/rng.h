@@ -11,12 +11,14 @@
 //
 // SAMPLER_SOBOL, Owen-scrambled Sobol points with hash-based scrambling (Burley, "Practical
 // Hash-based Owen Scrambling", JCGT 9(4), 2020), padded as pbrt-v4's PaddedSobolSampler does:
-// every 1-D or 2-D group of dimensions below (a pair: pixel jitter, point on the light,
-// scattered direction) takes Sobol's first two dimensions, which form a (0, 2)-sequence
-// (Sobol 1967; Niederreiter 1992, sec. 4.5), with its own random shuffle of the sample index
-// and its own Owen scramble of each coordinate, both seeded by a hash of (pixel, batch, group,
-// seed). So groups and pixels are decorrelated, and within a group the first 2^m points of a
-// batch are a (0, m, 2)-net: one point in every elementary interval of area 2^-m.
+// every dimension belongs to a pair (listed below), and every pair takes Sobol's first two
+// dimensions, which form a (0, 2)-sequence (Sobol 1967; Niederreiter 1992, sec. 4.5), with its
+// own random shuffle of the sample index and its own Owen scramble of each coordinate, all
+// three seeded by one hash of (pixel, batch, pair, seed). So pairs and pixels are
+// decorrelated, and within a pair the first 2^m points of a batch are a (0, m, 2)-net: one
+// point in every elementary interval of area 2^-m; each coordinate alone is stratified into
+// 2^m equal intervals. The two coordinates of a pair share the hash and the shuffled index,
+// so one call (rng_get2) computes both, and a single draw (rng_get) the one it needs.
 // Sample s belongs to batch s mod SOBOL_BATCHES and is point s / SOBOL_BATCHES of that batch's
 // sequence; the batches are independent randomizations, so the variance of a pixel's mean is
 // estimated from the spread of its batch means (render/film.h) where the points of one batch
@@ -30,8 +32,9 @@
 //         4 and 5 environment-map pixel slot and coin, 6 lobe choice (Phong diffuse or
 //         specular, dielectric reflect or refract), 7 and 8 scattered direction,
 //         9 Russian roulette
-// Sobol groups: dimensions (0, 1) and, in every bounce, k = (2, 3) and (7, 8) are pairs; every
-// other dimension is a group of one.
+// Sobol pairs (first, second): the pixel jitter (0, 1) and, in every bounce, k = (0, 1),
+// (2, 3), (4, 5), (7, 8) and (6, 9): the lobe choice and the roulette share a pair because
+// neither has a partner of its own, and a pair costs little more than one of its coordinates.
 // Every dimension is one 32-bit word: rng_get gives its top 24 bits as a float in [0, 1);
 // the two alias-table slots (k = 0 and 4) take the whole word from rng_get_bits instead
 // (sampling.h, alias_slot_from_bits), since 24 bits cannot split a large table evenly.
@@ -141,34 +144,57 @@ inline uint sobol_dim1(uint index) {
     return bitfieldReverse(sobol_dim1_reversed(index));
 }
 
-// The first dimension of the Sobol group (see the layout above) that `dimension` belongs to.
+// The first dimension of the Sobol pair (see the layout above) that `dimension` belongs to.
 inline uint rng_group_first(uint dimension) {
-    if (dimension == RNG_PIXEL_Y) return RNG_PIXEL_X;
-    if (dimension < RNG_BOUNCE_BASE) return dimension;
+    if (dimension < RNG_BOUNCE_BASE) return RNG_PIXEL_X;
     uint k = (dimension - RNG_BOUNCE_BASE) % RNG_DIMS_PER_BOUNCE;
-    bool second_of_pair = k == RNG_LIGHT_U + 1u || k == RNG_DIR_U + 1u;
-    return second_of_pair ? dimension - 1u : dimension;
+    if (k == RNG_ROULETTE) return dimension - (RNG_ROULETTE - RNG_LOBE);
+    bool second = k == RNG_LIGHT_COIN || k == RNG_LIGHT_V || k == RNG_ENV_COIN || k == RNG_DIR_V;
+    return second ? dimension - 1u : dimension;
 }
 
-// One coordinate of the scrambled Sobol point of sample k.sample_index in `dimension`.
-inline uint sobol_bits(RngKey k, uint dimension) {
-    uint first = rng_group_first(dimension);
+// The second dimension of the Sobol pair whose first dimension is `first`.
+inline uint rng_group_second(uint first) {
+    if (first < RNG_BOUNCE_BASE) return RNG_PIXEL_Y;
+    uint k = (first - RNG_BOUNCE_BASE) % RNG_DIMS_PER_BOUNCE;
+    return k == RNG_LOBE ? first + (RNG_ROULETTE - RNG_LOBE) : first + 1u;
+}
+
+// Both coordinates of the scrambled Sobol point of sample k.sample_index in the pair whose
+// first dimension is `first`.
+inline uvec2 sobol_pair_bits(RngKey k, uint first) {
     uvec4 h = pcg4d(uvec4(k.pixel, k.sample_index % SOBOL_BATCHES, first, k.seed));
     // Burley sec. 4: a nested uniform scramble of the index is a random permutation that maps
     // each aligned block of 2^m indices onto one such block, so every prefix of 2^m points
     // stays a net.
     uint index = nested_uniform_scramble(k.sample_index / SOBOL_BATCHES, h.x);
-    // The Owen scramble of the point, nested_uniform_scramble(point, seed), reverses the
-    // point's bits to scramble them; both dimensions are reversals of simple functions of the
-    // index, so the reversed point is computed directly.
-    if (dimension == first) return bitfieldReverse(laine_karras_permutation(index, h.y));
-    return bitfieldReverse(laine_karras_permutation(sobol_dim1_reversed(index), h.z));
+    // The Owen scramble of a point, nested_uniform_scramble(point, seed), reverses the point's
+    // bits to scramble them; both dimensions are reversals of simple functions of the index,
+    // so the reversed points are computed directly.
+    return uvec2(bitfieldReverse(laine_karras_permutation(index, h.y)),
+                 bitfieldReverse(laine_karras_permutation(sobol_dim1_reversed(index), h.z)));
+}
+
+// The 32-bit words of the pair whose first dimension is `first`: (first, rng_group_second(first)).
+inline uvec2 rng_get2_bits(RngKey k, uint first) {
+    if (k.sampler_id == SAMPLER_SOBOL) return sobol_pair_bits(k, first);
+    return uvec2(pcg4d(uvec4(k.pixel, k.sample_index, first, k.seed)).x,
+                 pcg4d(uvec4(k.pixel, k.sample_index, rng_group_second(first), k.seed)).x);
 }
 
 // The 32-bit word of one dimension.
 inline uint rng_get_bits(RngKey k, uint dimension) {
-    if (k.sampler_id == SAMPLER_SOBOL) return sobol_bits(k, dimension);
+    if (k.sampler_id == SAMPLER_SOBOL) {
+        uint first = rng_group_first(dimension);
+        uvec2 pair = sobol_pair_bits(k, first);
+        return dimension == first ? pair.x : pair.y;
+    }
     return pcg4d(uvec4(k.pixel, k.sample_index, dimension, k.seed)).x;
+}
+
+inline vec2 rng_get2(RngKey k, uint first) {
+    uvec2 w = rng_get2_bits(k, first);
+    return vec2(uint_to_unit_float(w.x), uint_to_unit_float(w.y));
 }
 
 inline float rng_get(RngKey k, uint dimension) {
@@ -179,12 +205,13 @@ inline uint rng_bounce_dim(uint bounce, uint k) {
     return RNG_BOUNCE_BASE + bounce * RNG_DIMS_PER_BOUNCE + k;
 }
 
-inline float rng_bounce(RngKey key, uint bounce, uint k) {
-    return rng_get(key, rng_bounce_dim(bounce, k));
+// The pair of bounce `bounce` whose first dimension is k: (k, its partner) as in the layout.
+inline vec2 rng_bounce2(RngKey key, uint bounce, uint k) {
+    return rng_get2(key, rng_bounce_dim(bounce, k));
 }
 
-inline uint rng_bounce_bits(RngKey key, uint bounce, uint k) {
-    return rng_get_bits(key, rng_bounce_dim(bounce, k));
+inline uvec2 rng_bounce2_bits(RngKey key, uint bounce, uint k) {
+    return rng_get2_bits(key, rng_bounce_dim(bounce, k));
 }
 
 TP_NAMESPACE_END

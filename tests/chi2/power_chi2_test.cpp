@@ -77,8 +77,9 @@ TEST_CASE("power: correlated random dimensions are rejected", "[chi2][power]") {
     PointSamples s;
     for (uint32_t pixel = 0; pixel < 1000; ++pixel)
         for (uint32_t sample = 0; sample < 1000; ++sample) {
-            const float a = tp::rng_bounce(tp::rng_key(tp::SAMPLER_RANDOM, 7u, pixel, sample), 3u,
-                                           tp::RNG_DIR_U);
+            const float a = tp::rng_bounce2(tp::rng_key(tp::SAMPLER_RANDOM, 7u, pixel, sample), 3u,
+                                            tp::RNG_DIR_U)
+                                .x;
             s.points.emplace_back(a, a);
         }
     check_rejected("correlated rng dimensions",

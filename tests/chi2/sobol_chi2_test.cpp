@@ -1,6 +1,6 @@
 // The Sobol sampler of shared/rng.h: its numbers are uniform in every dimension and every pair
 // of dimensions of a bounce block (chi-square over many pixels, whose scrambles are
-// independent), and the pairs that need it keep the (0, 2)-sequence stratification of Sobol's
+// independent), and every pair keeps the (0, 2)-sequence stratification of Sobol's
 // first two dimensions after Burley's shuffle and scramble (an exact count).
 #include "chi2/suite.h"
 
@@ -54,14 +54,6 @@ bool is_net(const std::vector<uint32_t>& u, const std::vector<uint32_t>& v, uint
     return true;
 }
 
-// Exactly one of the 2^m values in every interval [i 2^-m, (i+1) 2^-m).
-bool is_stratified(const std::vector<uint32_t>& u, uint32_t m) {
-    std::vector<int> count(size_t(1) << m, 0);
-    for (uint32_t x : u)
-        if (++count[x >> (32 - m)] > 1) return false;
-    return true;
-}
-
 } // namespace
 
 TEST_CASE("sobol sampler: every dimension of a bounce block is uniform", "[chi2][sobol]") {
@@ -91,33 +83,60 @@ TEST_CASE("sobol sampler: every pair of dimensions of a bounce block is uniform"
         }
 }
 
-TEST_CASE("sobol sampler: pairs are (0, m, 2)-nets and single dimensions stratified in every "
-          "aligned block of a batch",
+TEST_CASE("sobol sampler: every pair is a (0, m, 2)-net in every aligned block of a batch",
           "[sobol]") {
     // Samples s = b + K j of batch b, for j in an aligned block [c 2^m, (c + 1) 2^m): the first
     // 2^m points of a batch (c = 0) and a later block, as a sample range split elsewhere gets.
+    // Every pair of the layout, each in a different bounce; a net's coordinates are also
+    // stratified one by one (the intervals with a = 0 and a = m).
     const uint32_t m = 8, n = 1u << m;
-    const uint32_t pairs[3] = {tp::RNG_PIXEL_X, tp::rng_bounce_dim(0u, tp::RNG_LIGHT_U),
-                               tp::rng_bounce_dim(3u, tp::RNG_DIR_U)};
+    const uint32_t firsts[6] = {tp::RNG_PIXEL_X,
+                                tp::rng_bounce_dim(0u, tp::RNG_LIGHT_SLOT),
+                                tp::rng_bounce_dim(0u, tp::RNG_LIGHT_U),
+                                tp::rng_bounce_dim(1u, tp::RNG_ENV_SLOT),
+                                tp::rng_bounce_dim(2u, tp::RNG_LOBE),
+                                tp::rng_bounce_dim(3u, tp::RNG_DIR_U)};
     for (uint32_t pixel : {0u, 77u, 4095u})
         for (uint32_t b = 0; b < tp::SOBOL_BATCHES; ++b)
-            for (uint32_t c : {0u, 5u}) {
-                auto words = [&](uint32_t d) {
-                    std::vector<uint32_t> w;
-                    for (uint32_t j = c * n; j < (c + 1) * n; ++j)
-                        w.push_back(tp::rng_get_bits(
-                            tp::rng_key(tp::SAMPLER_SOBOL, 3u, pixel, b + tp::SOBOL_BATCHES * j),
-                            d));
-                    return w;
-                };
-                CAPTURE(pixel, b, c);
-                for (uint32_t d : pairs) {
-                    CAPTURE(d);
-                    CHECK(is_net(words(d), words(d + 1), m));
+            for (uint32_t c : {0u, 5u})
+                for (uint32_t first : firsts) {
+                    std::vector<uint32_t> u, v, u1, v1;
+                    for (uint32_t j = c * n; j < (c + 1) * n; ++j) {
+                        const tp::RngKey key =
+                            tp::rng_key(tp::SAMPLER_SOBOL, 3u, pixel, b + tp::SOBOL_BATCHES * j);
+                        const tp::uvec2 w = tp::rng_get2_bits(key, first);
+                        u.push_back(w.x);
+                        v.push_back(w.y);
+                        // The single draws are the pair's coordinates.
+                        u1.push_back(tp::rng_get_bits(key, first));
+                        v1.push_back(tp::rng_get_bits(key, tp::rng_group_second(first)));
+                    }
+                    CAPTURE(pixel, b, c, first);
+                    CHECK(is_net(u, v, m));
+                    CHECK(u1 == u);
+                    CHECK(v1 == v);
                 }
-                CHECK(is_stratified(words(tp::rng_bounce_dim(2u, tp::RNG_ROULETTE)), m));
-                CHECK(is_stratified(words(tp::rng_bounce_dim(0u, tp::RNG_LOBE)), m));
-            }
+}
+
+TEST_CASE("sobol sampler: every dimension of a bounce block belongs to exactly one pair",
+          "[sobol]") {
+    // Pixel jitter and two bounce blocks: rng_group_first and rng_group_second are inverse on
+    // the layout's pairs, and every dimension is the first or the second of one pair.
+    std::vector<int> seen(tp::rng_bounce_dim(2u, 0u), 0);
+    for (uint32_t d = 0; d < seen.size(); ++d) {
+        const uint32_t first = tp::rng_group_first(d);
+        CAPTURE(d, first);
+        CHECK(tp::rng_group_first(first) == first);
+        CHECK((d == first || tp::rng_group_second(first) == d));
+        if (d == first) {
+            ++seen[first];
+            ++seen[tp::rng_group_second(first)];
+        }
+    }
+    for (uint32_t d = 0; d < seen.size(); ++d) {
+        CAPTURE(d);
+        CHECK(seen[d] == 1);
+    }
 }
 
 TEST_CASE("power: two groups that share the index shuffle are rejected", "[chi2][sobol][power]") {

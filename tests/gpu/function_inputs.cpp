@@ -149,10 +149,10 @@ void make_input(uint32_t id, InputGen& g, FnIn& x) {
     case FN_UINT_TO_UNIT_FLOAT:
     case FN_RNG_KEY:
     case FN_RNG_GET:
-    case FN_RNG_BOUNCE:
+    case FN_RNG_BOUNCE2:
     case FN_UMUL_HI:
     case FN_RNG_GET_BITS:
-    case FN_RNG_BOUNCE_BITS:
+    case FN_RNG_BOUNCE2_BITS:
     case FN_LAINE_KARRAS_PERMUTATION:
     case FN_NESTED_UNIFORM_SCRAMBLE:
     case FN_SOBOL_DIM1:

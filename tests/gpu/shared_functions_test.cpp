@@ -181,14 +181,14 @@ std::vector<Case> cases() {
     c.push_back({FN_RNG_KEY, "rng_key", exact});
     c.push_back({FN_RNG_GET, "rng_get", exact});
     c.push_back({FN_RNG_BOUNCE_DIM, "rng_bounce_dim", exact});
-    c.push_back({FN_RNG_BOUNCE, "rng_bounce", exact});
+    c.push_back({FN_RNG_BOUNCE2, "rng_bounce2", exact});
     c.push_back({FN_UMUL_HI, "umul_hi", exact});
     c.push_back({FN_RNG_GET_BITS, "rng_get_bits", exact});
-    c.push_back({FN_RNG_BOUNCE_BITS, "rng_bounce_bits", exact});
+    c.push_back({FN_RNG_BOUNCE2_BITS, "rng_bounce2_bits", exact});
     c.push_back({FN_LAINE_KARRAS_PERMUTATION, "laine_karras_permutation", exact});
     c.push_back({FN_NESTED_UNIFORM_SCRAMBLE, "nested_uniform_scramble", exact}); // bitfieldReverse
     c.push_back({FN_SOBOL_DIM1, "sobol_dim1", exact});
-    c.push_back({FN_RNG_GROUP_FIRST, "rng_group_first", exact});
+    c.push_back({FN_RNG_GROUP_FIRST, "rng_group_first and rng_group_second", exact});
     // cos/sin(2 pi u2) (2^-11) times sin(theta) = sqrt(u1); cos(theta) = sqrt(1 - u1).
     c.push_back({FN_SAMPLE_COSINE_HEMISPHERE, "sample_cosine_hemisphere",
                  [](const FnIn& x, const FnOut& cpu, const FnOut& gpu, Checker& k) {

@@ -130,4 +130,13 @@ TEST_CASE("bitfieldReverse moves bit n to bit 31 - n (GLSL 8.8)", "[glsl]") {
     CHECK(tp::bitfieldReverse(3u) == 0xC0000000u);
     CHECK(tp::bitfieldReverse(0x12345678u) == 0x1E6A2C48u);
     CHECK(tp::bitfieldReverse(0xFFFFFFFFu) == 0xFFFFFFFFu);
+    // Against the definition, bit by bit, on words of every bit pattern density.
+    uint32_t x = 0x9E3779B9u;
+    for (int i = 0; i < 1000; ++i) {
+        x = x * 1664525u + 1013904223u;
+        const uint32_t w = i % 3 == 0 ? x & (x >> 7) : i % 3 == 1 ? x | (x << 5) : x;
+        uint32_t expected = 0;
+        for (int b = 0; b < 32; ++b) expected |= ((w >> b) & 1u) << (31 - b);
+        CHECK(tp::bitfieldReverse(w) == expected);
+    }
 }

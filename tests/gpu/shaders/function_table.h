@@ -47,7 +47,7 @@ const uint FN_UINT_TO_UNIT_FLOAT = 11u;
 const uint FN_RNG_KEY = 12u;
 const uint FN_RNG_GET = 13u;
 const uint FN_RNG_BOUNCE_DIM = 14u;
-const uint FN_RNG_BOUNCE = 15u;
+const uint FN_RNG_BOUNCE2 = 15u;
 const uint FN_SAMPLE_COSINE_HEMISPHERE = 16u;
 const uint FN_COSINE_HEMISPHERE_PDF = 17u;
 const uint FN_PHONG_POWER = 18u;
@@ -117,7 +117,7 @@ const uint FN_WATERTIGHT_RAY = 81u;
 const uint FN_INTERSECT_TRIANGLE = 82u;
 const uint FN_UMUL_HI = 83u;
 const uint FN_RNG_GET_BITS = 84u;
-const uint FN_RNG_BOUNCE_BITS = 85u;
+const uint FN_RNG_BOUNCE2_BITS = 85u;
 const uint FN_LAINE_KARRAS_PERMUTATION = 86u;
 const uint FN_NESTED_UNIFORM_SCRAMBLE = 87u;
 const uint FN_SOBOL_DIM1 = 88u;
@@ -304,15 +304,21 @@ inline FnOut run_function(uint id, FnIn x) {
     case FN_RNG_GET_BITS:
         o.u.x = rng_get_bits(fn_rng_key(x), x.u.w);
         break;
-    case FN_RNG_BOUNCE_BITS:
-        o.u.x = rng_bounce_bits(fn_rng_key(x), x.u.w & 0xFFu, (x.u.w >> 8u) % 10u);
+    case FN_RNG_BOUNCE2_BITS: {
+        uvec2 r = rng_bounce2_bits(fn_rng_key(x), x.u.w & 0xFFu, (x.u.w >> 8u) % 10u);
+        o.u.x = r.x;
+        o.u.y = r.y;
         break;
+    }
     case FN_RNG_BOUNCE_DIM:
         o.u.x = rng_bounce_dim(x.u.x, x.u.y);
         break;
-    case FN_RNG_BOUNCE:
-        o.f[0].x = rng_bounce(fn_rng_key(x), x.u.w & 0xFFu, (x.u.w >> 8u) % 10u);
+    case FN_RNG_BOUNCE2: {
+        vec2 r = rng_bounce2(fn_rng_key(x), x.u.w & 0xFFu, (x.u.w >> 8u) % 10u);
+        o.f[0].x = r.x;
+        o.f[0].y = r.y;
         break;
+    }
     case FN_LAINE_KARRAS_PERMUTATION:
         o.u.x = laine_karras_permutation(x.u.x, x.u.y);
         break;
@@ -324,6 +330,7 @@ inline FnOut run_function(uint id, FnIn x) {
         break;
     case FN_RNG_GROUP_FIRST:
         o.u.x = rng_group_first(x.u.x);
+        o.u.y = rng_group_second(o.u.x);
         break;
     case FN_SAMPLE_COSINE_HEMISPHERE:
         fn_put3(o, 0u, sample_cosine_hemisphere(vec2(a.x, a.y)));

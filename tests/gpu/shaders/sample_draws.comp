@@ -42,7 +42,7 @@ void main() {
     case DRAW_RNG_PAIR: {
         // The direction pair of bounce 3, pixels x samples as in the CPU test.
         RngKey k = rng_key(SAMPLER_RANDOM, 7u, i / 1000u, i % 1000u);
-        r = vec4(rng_bounce(k, 3u, RNG_DIR_U), rng_bounce(k, 3u, RNG_DIR_V), 0.0f, 1.0f);
+        r = vec4(rng_bounce2(k, 3u, RNG_DIR_U), 0.0f, 1.0f);
         break;
     }
     case DRAW_PHONG_MIXTURE: {
