@@ -13,8 +13,9 @@
 // After each sample, a loop of exactly batch.probe_iterations iterations checks that the
 // budget held while the sample ran (once it is spent, every loop runs exactly once). Only then
 // is the sample kept; otherwise the pixel stops at that sample, and the host repeats the
-// dispatch, which resumes every pixel at its next_sample. Every sample index is thus traced to
-// completion exactly once, whatever the device. Elsewhere the probe always passes.
+// dispatch, which resumes every slot of every pixel at its next_sample. Every sample index is
+// thus traced to completion exactly once, whatever the device. Elsewhere the probe always
+// passes.
 #ifndef TP_SHADERS_ACCUMULATE_GLSL
 #define TP_SHADERS_ACCUMULATE_GLSL
 
@@ -45,58 +46,63 @@ bool loop_budget_held() {
     return n == batch.probe_iterations;
 }
 
+// The pixel's samples in [batch.sample_begin, end), slot by slot: slot b (one per Sobol batch,
+// interface.h; the only one with the random sampler) takes the samples s = b mod slots in
+// increasing order, in registers, and is read and written once, so a sample costs no memory
+// traffic whatever the sampler. Each slot keeps its own next_sample (the next index of its
+// residue class still to trace), so a dispatch cut short resumes every slot where it stopped.
+// The running sums continue the slot's, so a slot's samples are added to one double sum in
+// sample order however the render is split into batches and repeated dispatches: the batch
+// planner follows measured time, and the same seed must still give the same bits.
 PixelCounts render_pixel(uvec2 pixel) {
     PixelCounts c = pixel_counts_zero();
     uint slots = accum_slots(params.sampler_id);
     uint first = (pixel.y * params.camera.width + pixel.x) * slots;
-    // The running sums continue the accumulator's, so a pixel's samples are added to one double
-    // sum in sample order however the render is split into batches and repeated dispatches:
-    // the batch planner follows measured time, and the same seed must still give the same bits.
-    dvec3 sum = accum[first].sum;
-    dvec3 sum_sq = accum[first].sum_sq;
-    uint n = accum[first].count;
     uint end = batch.sample_begin + batch.sample_count;
-    // next_sample is 0 in a fresh accumulator, below a --sample-offset render's first sample.
-    uint s = max(accum[first].next_sample, batch.sample_begin);
-    for (; s < end; ++s) {
-        RayCounts rays;
-        rays.camera = 0u;
-        rays.extension = 0u;
-        rays.shadow = 0u;
+    bool held = true;
+    for (uint b = 0u; b < slots && held; ++b) {
+        uint a = first + b;
+        // next_sample is 0 in a fresh accumulator, below a --sample-offset render's first
+        // sample; then up to the first index of the slot's class.
+        uint s = max(accum[a].next_sample, batch.sample_begin);
+        s += (b + slots - s % slots) % slots;
+        dvec3 sum = accum[a].sum;
+        dvec3 sum_sq = accum[a].sum_sq;
+        uint n = accum[a].count;
+        for (; s < end; s += slots) {
+            RayCounts rays;
+            rays.camera = 0u;
+            rays.extension = 0u;
+            rays.shadow = 0u;
 #ifdef TP_DEBUG_SHADER
-        vec3 L = debug_header.integrator == INTEGRATOR_PATH
-                     ? path_radiance(pixel.x, pixel.y, s, rays)
-                     : debug_view_radiance(pixel.x, pixel.y, s);
+            vec3 L = debug_header.integrator == INTEGRATOR_PATH
+                         ? path_radiance(pixel.x, pixel.y, s, rays)
+                         : debug_view_radiance(pixel.x, pixel.y, s);
 #else
-        vec3 L = path_radiance(pixel.x, pixel.y, s, rays);
+            vec3 L = path_radiance(pixel.x, pixel.y, s, rays);
 #endif
-        if (!loop_budget_held()) break; // sample s is discarded and traced again
-        c.rays.camera += rays.camera;
-        c.rays.extension += rays.extension;
-        c.rays.shadow += rays.shadow;
-        if (!is_finite3(L)) {
-            ++c.nan;
-            continue;
-        }
-        dvec3 d = dvec3(L);
-        if (slots == 1u) {
+            if (!loop_budget_held()) { // sample s is discarded and traced again
+                held = false;
+                break;
+            }
+            c.rays.camera += rays.camera;
+            c.rays.extension += rays.extension;
+            c.rays.shadow += rays.shadow;
+            if (!is_finite3(L)) {
+                ++c.nan;
+                continue;
+            }
+            dvec3 d = dvec3(L);
             sum += d;
             sum_sq += d * d;
             ++n;
-        } else { // consecutive samples go to different batches: straight to their slot
-            uint a = first + s % slots;
-            accum[a].sum += d;
-            accum[a].sum_sq += d * d;
-            accum[a].count += 1u;
         }
+        accum[a].sum = sum;
+        accum[a].sum_sq = sum_sq;
+        accum[a].count = n;
+        accum[a].next_sample = s;
     }
-    c.truncated = s < end ? 1u : 0u;
-    if (slots == 1u) {
-        accum[first].sum = sum;
-        accum[first].sum_sq = sum_sq;
-        accum[first].count = n;
-    }
-    accum[first].next_sample = s;
+    c.truncated = held ? 0u : 1u;
     return c;
 }
 

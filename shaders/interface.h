@@ -44,10 +44,11 @@ const uint SPEC_SCENE_FEATURES = 0u; // uint: the FEATURE_* mask the path loop i
 // ---- push constants of one dispatch ----------------------------------------------------------
 // The dispatch covers rows [row_begin, row_end) of the image, every column, and samples
 // [sample_begin, sample_begin + sample_count) of each of those pixels.
-// A pixel continues from max(next_sample, sample_begin) (PixelAccum): next_sample equals
-// sample_begin unless a dispatch of this batch was cut short (accumulate.glsl, loop budget) and
-// is being repeated, or is still 0 before the first batch of a render that starts at a
-// --sample-offset.
+// Each accumulator slot of a pixel continues from max(next_sample, sample_begin) (PixelAccum),
+// rounded up to the slot's residue class: next_sample is already the first index of that class
+// at or after sample_begin, unless a dispatch of this batch was cut short (accumulate.glsl, loop
+// budget) and is being repeated (then it is later), or it is still 0 before the first batch of
+// a render that starts at a --sample-offset.
 struct BatchParams {
     uint sample_begin;
     uint sample_count;
@@ -66,7 +67,7 @@ const uint LOOP_PROBE_ITERATIONS = 2u;
 // many there were, and the index of the next sample to trace. The host merges them into the
 // Film with Film::add_batch (Chan et al.). With the Sobol sampler a pixel has one PixelAccum
 // per batch (sample s in slot s mod SOBOL_BATCHES, pixel-major), for the batch estimator of the
-// variance (render/film.h); next_sample lives in the pixel's first slot.
+// variance (render/film.h); every slot keeps the next sample of its own class.
 struct PixelAccum {
     dvec3 sum;
     dvec3 sum_sq;
