@@ -119,6 +119,17 @@ inline BsdfSample bsdf_sample_in(uint features, Material m, vec3 n, vec3 wo, flo
     return phong_sample(m.kd, m.ks, m.ns, n, wo, u_lobe, u_dir);
 }
 
+// Whether bsdf_sample_in's result depends on u_lobe: a dielectric chooses reflection or
+// refraction with it; a Phong material only where both lobes have weight, since u_lobe < p_d
+// holds for every u_lobe in [0, 1) when p_d >= 1 and for none when p_d <= 0.
+inline bool bsdf_reads_lobe_choice_in(uint features, Material m) {
+    if (feature_on(features, FEATURE_MIRROR) && m.type == MATERIAL_MIRROR) return false;
+    if (feature_on(features, FEATURE_DIELECTRIC) && m.type == MATERIAL_DIELECTRIC) return true;
+    if (!feature_on(features, FEATURE_PHONG_SPECULAR)) return false;
+    float p_d = phong_diffuse_probability(m.kd, m.ks);
+    return p_d > 0.0f && p_d < 1.0f;
+}
+
 // lights.h's sample_light (every light but the environment map), restricted to a mask.
 inline LightSample sample_light_in(uint features, Light l, vec3 p, vec2 u,
                                    bool normal_from_vertices) {

@@ -145,8 +145,13 @@ vec3 path_radiance(uint x, uint y, uint sample_index, INOUT(RayCounts) rays) {
             }
         }
 
-        // 4. Scattering. The lobe choice shares a Sobol pair with the roulette (rng.h).
-        vec2 lobe_roulette = rng_bounce2(key, bounce, RNG_LOBE);
+        // 4. Scattering. The lobe choice shares a Sobol pair with the roulette (rng.h); the pair
+        // is drawn only where one of them is read (the roulette's number from min_depth on), and
+        // a skipped draw leaves every other number as it is (rng.h's layout is fixed).
+        bool lobe_or_roulette_read = bsdf_reads_lobe_choice_in(scene_features, mat) ||
+                                     bounce + 1u >= params.min_depth || path_log_recording;
+        vec2 lobe_roulette =
+            lobe_or_roulette_read ? rng_bounce2(key, bounce, RNG_LOBE) : vec2(0.0f);
         vec2 dir_uv = rng_bounce2(key, bounce, RNG_DIR_U);
         BsdfSample bs = bsdf_sample_in(scene_features, mat, sp.ns, wo, lobe_roulette.x, dir_uv);
         PATH_LOG(rec.rng[RNG_LOBE] = lobe_roulette.x; rec.rng[RNG_DIR_U] = dir_uv.x;
