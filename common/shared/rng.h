@@ -92,6 +92,9 @@ struct RngKey {
     uint pixel; // y * width + x
     uint sample_index;
     uint sampler_id; // SAMPLER_*
+    // Sobol: the point's index within its batch, bit-reversed (the first step of the index
+    // shuffle in sobol_pair_bits, the same for every pair of the sample).
+    uint index_reversed;
 };
 
 inline RngKey rng_key(uint sampler_id, uint seed, uint pixel, uint sample_index) {
@@ -100,6 +103,7 @@ inline RngKey rng_key(uint sampler_id, uint seed, uint pixel, uint sample_index)
     k.pixel = pixel;
     k.sample_index = sample_index;
     k.sampler_id = sampler_id;
+    k.index_reversed = bitfieldReverse(sample_index / SOBOL_BATCHES);
     return k;
 }
 
@@ -166,8 +170,9 @@ inline uvec2 sobol_pair_bits(RngKey k, uint first) {
     uvec4 h = pcg4d(uvec4(k.pixel, k.sample_index % SOBOL_BATCHES, first, k.seed));
     // Burley sec. 4: a nested uniform scramble of the index is a random permutation that maps
     // each aligned block of 2^m indices onto one such block, so every prefix of 2^m points
-    // stays a net.
-    uint index = nested_uniform_scramble(k.sample_index / SOBOL_BATCHES, h.x);
+    // stays a net. This is nested_uniform_scramble(k.sample_index / SOBOL_BATCHES, h.x), with
+    // its inner reversal taken from the key.
+    uint index = bitfieldReverse(laine_karras_permutation(k.index_reversed, h.x));
     // The Owen scramble of a point, nested_uniform_scramble(point, seed), reverses the point's
     // bits to scramble them; both dimensions are reversals of simple functions of the index,
     // so the reversed points are computed directly.
