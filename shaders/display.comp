@@ -34,9 +34,5 @@ void main() {
         count += accum[i * display.slots + b].count;
     }
     vec3 mean = count > 0u ? vec3(sum / double(count)) : vec3(0.0f);
-    uvec3 code = uvec3(255u, 0u, 255u); // non-finite: magenta, as in the PNG
-    if (!any(isnan(mean)) && !any(isinf(mean)))
-        code = uvec3(srgb8_code(mean.r * display.scale), srgb8_code(mean.g * display.scale),
-                     srgb8_code(mean.b * display.scale));
-    pixels[i] = display_pack(code, display.bgra);
+    pixels[i] = display_pack(display_srgb8(mean, display.scale), display.bgra);
 }

@@ -20,11 +20,8 @@ std::vector<uint8_t> tonemap_srgb8(const std::vector<float>& r, const std::vecto
     const float scale = std::exp2(exposure_stops);
     std::vector<uint8_t> out(r.size() * 3);
     for (size_t i = 0; i < r.size(); ++i) {
-        const float c[3] = {r[i], g[i], b[i]};
-        const bool finite = std::isfinite(c[0]) && std::isfinite(c[1]) && std::isfinite(c[2]);
-        for (int k = 0; k < 3; ++k) {
-            out[3 * i + k] = uint8_t(finite ? srgb8_code(c[k] * scale) : (k == 1 ? 0u : 255u));
-        }
+        const uvec3 code = display_srgb8(vec3(r[i], g[i], b[i]), scale);
+        for (int k = 0; k < 3; ++k) out[3 * i + k] = uint8_t(code[k]);
     }
     return out;
 }

@@ -14,8 +14,8 @@ namespace tp {
 // (util/output_file.h): no partial file, a device written in place. Throws RuntimeError.
 void write_png(const std::string& path, int width, int height, const std::vector<uint8_t>& rgb);
 
-// Linear radiance to display (shared/tonemap.h, srgb8_code). Non-finite values become magenta so
-// they cannot hide.
+// Linear radiance to display, pixel by pixel as the viewer's display pass (shared/tonemap.h,
+// display_srgb8): non-finite values become magenta so they cannot hide.
 std::vector<uint8_t> tonemap_srgb8(const std::vector<float>& r, const std::vector<float>& g,
                                    const std::vector<float>& b, float exposure_stops);
 

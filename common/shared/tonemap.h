@@ -5,6 +5,7 @@
 #define TP_SHARED_TONEMAP_H
 
 #include "shared/lang.h"
+#include "shared/math.h"
 
 TP_NAMESPACE_BEGIN
 
@@ -17,6 +18,15 @@ inline float linear_to_srgb(float x) {
 // is round-half-up, the same as std::lround for v >= 0.
 inline uint srgb8_code(float x) {
     return uint(floor(linear_to_srgb(x) * 255.0f + 0.5f));
+}
+
+// A pixel's three 8-bit codes for its linear radiance and the exposure factor 2^exposure.
+// A non-finite channel makes the pixel magenta, so that a NaN or Inf shows rather than
+// clamping to black or white.
+inline uvec3 display_srgb8(vec3 radiance, float scale) {
+    if (!is_finite3(radiance)) return uvec3(255u, 0u, 255u);
+    return uvec3(srgb8_code(radiance.x * scale), srgb8_code(radiance.y * scale),
+                 srgb8_code(radiance.z * scale));
 }
 
 TP_NAMESPACE_END
