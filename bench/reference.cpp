@@ -4,6 +4,7 @@
 #include "bench/scene_hash.h"
 #include "cpu_ref/cpu_renderer.h"
 #include "image/exr_io.h"
+#include "render/render_header.h"
 
 #include <fmt/format.h>
 
@@ -46,9 +47,8 @@ Reference reference_for(const FlatScene& scene, const std::string& name, uint32_
         if (key != img.strings.end() && key->second == ref.key) {
             ref.image = rgb_image_from_exr(img, ref.file);
             ref.cached = true;
-            ref.render_s = img.reals.count("twinpath:render_time_s")
-                               ? img.reals.at("twinpath:render_time_s")
-                               : 0.0;
+            ref.render_s =
+                img.reals.count(header::kRenderTime) ? img.reals.at(header::kRenderTime) : 0.0;
             return ref;
         }
     }
@@ -57,14 +57,9 @@ Reference reference_for(const FlatScene& scene, const std::string& name, uint32_
     opt.seed = kReferenceSeed;
     opt.progress = progress;
     const RenderResult r = render_cpu(s, opt);
-    ExrImage img = r.film.to_exr();
+    ExrImage img = render_exr(r, s, opt);
     img.strings[kKeyAttribute] = ref.key;
-    img.strings["twinpath:backend"] = "cpu/embree";
-    img.strings["twinpath:device"] = r.stats.device;
-    img.strings["twinpath:scene"] = name;
-    img.integers["twinpath:spp"] = r.stats.spp;
-    img.integers["twinpath:seed"] = r.stats.seed;
-    img.reals["twinpath:render_time_s"] = r.stats.wall_time_s;
+    img.strings[header::kScene] = name;
     fs::create_directories(dir);
     write_exr(ref.file, img);
     ref.image = rgb_image_from_exr(img, ref.file);
