@@ -6,7 +6,7 @@
 
 #include "render/render_options.h"
 #include "scene/flatten.h"
-#include "vulkan_rt/vulkan_renderer.h"
+#include "vulkan_rt/renderer/vulkan_renderer.h"
 
 #include <string>
 #include <vector>

@@ -7,7 +7,7 @@
 #include "scene/flatten.h"
 #include "scene/load.h"
 #include "util/error.h"
-#include "vulkan_rt/vulkan_renderer.h"
+#include "vulkan_rt/renderer/vulkan_renderer.h"
 
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>

@@ -13,7 +13,7 @@
 #include "util/error.h"
 #include "util/interrupt.h"
 #include "util/progress_bar.h"
-#include "vulkan_rt/vulkan_renderer.h"
+#include "vulkan_rt/renderer/vulkan_renderer.h"
 
 #include <fmt/core.h>
 

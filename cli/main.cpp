@@ -4,7 +4,7 @@
 #include "commands.h"
 #include "scene/text_parse.h"
 #include "util/error.h"
-#include "vulkan_rt/vulkan_renderer.h"
+#include "vulkan_rt/renderer/vulkan_renderer.h"
 
 #include <fmt/core.h>
 

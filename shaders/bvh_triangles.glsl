@@ -11,7 +11,7 @@
 #include "shared/surface.h"
 #include "trace_hit.glsl"
 
-// BvhTriangle (vulkan_rt/bvh_builder.h) read as 4 vec4s an item, so that every load is one
+// BvhTriangle (vulkan_rt/accel/bvh_builder.h) read as 4 vec4s an item, so that every load is one
 // aligned 16-byte transaction: a (primitive in w), b (with one level the instance in w), c, and
 // the plane normal.
 layout(std430, set = 0, binding = BINDING_BVH_TRIS) readonly buffer BvhTriangleBuffer {

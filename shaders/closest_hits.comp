@@ -1,5 +1,5 @@
 #version 460
-// Ray queries for vulkan_rt/ray_queries.h in compute mode: one ray per invocation through the
+// Ray queries for vulkan_rt/renderer/ray_queries.h in compute mode: one ray per invocation through the
 // compute mode's trace include (trace_bvh.glsl, or with TP_TRACE_WIDE trace_cwbvh.glsl; the
 // render shader's bindings and BVH, in the shape its feature mask gives), the closest hit and
 // the occlusion query's answer back. On lavapipe every loop of a SIMD group stops silently once

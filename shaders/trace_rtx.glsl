@@ -1,5 +1,5 @@
 // The pipeline mode's trace include: the same two ray queries as trace_bvh.glsl, answered by
-// traceRayEXT against the top-level acceleration structure (vulkan_rt/accel_structures.cpp),
+// traceRayEXT against the top-level acceleration structure (vulkan_rt/accel/accel_structures.cpp),
 // the way nvpro-samples vk_raytrace swaps traceray_rq.glsl for traceray_rtx.glsl. Only the
 // ray-generation shader includes it, so it is the only caller of traceRayEXT: the hit and miss
 // shaders just fill a payload, and the path loop stays one loop in one invocation (recursive

@@ -10,7 +10,7 @@
 //     uniformly, weight 2 ks cos_i. So the bound is the albedo times at most 2, and the
 //     *mean* weight (the directional albedo) must stay <= kd + ks = 1 within 4 SE.
 #include "stress/common.h"
-#include "vulkan_rt/shader_dispatch.h"
+#include "vulkan_rt/device/shader_dispatch.h"
 
 #include "shared/brdf.h"
 #include "stress_brdf_comp.spv.h"

@@ -4,7 +4,7 @@
 #include "compare/rgb_image.h"
 #include "cpu_ref/cpu_renderer.h"
 #include "scene/generators.h"
-#include "vulkan_rt/vulkan_renderer.h"
+#include "vulkan_rt/renderer/vulkan_renderer.h"
 
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>

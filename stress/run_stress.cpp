@@ -5,8 +5,8 @@
 
 #include "util/error.h"
 #include "util/output_file.h"
-#include "vulkan_rt/context.h"
-#include "vulkan_rt/vulkan_renderer.h"
+#include "vulkan_rt/device/context.h"
+#include "vulkan_rt/renderer/vulkan_renderer.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>

@@ -1,6 +1,6 @@
 #include "view/overlay.h"
 
-#include "vulkan_rt/vk_error.h"
+#include "vulkan_rt/device/vk_error.h"
 
 #include <backends/imgui_impl_glfw.h>
 #include <backends/imgui_impl_vulkan.h>

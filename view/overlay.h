@@ -4,8 +4,8 @@
 #pragma once
 
 #include "view/window.h"
-#include "vulkan_rt/context.h"
-#include "vulkan_rt/presenter.h"
+#include "vulkan_rt/device/context.h"
+#include "vulkan_rt/view/presenter.h"
 
 #include <string>
 #include <vector>

@@ -4,7 +4,7 @@
 #pragma once
 
 #include "view/view_input.h"
-#include "vulkan_rt/context.h"
+#include "vulkan_rt/device/context.h"
 
 #include <cstdint>
 #include <string>

@@ -14,7 +14,7 @@
 #include "scene/load.h"
 #include "shared/intersect.h"
 #include "shared/surface.h"
-#include "vulkan_rt/bvh_builder.h"
+#include "vulkan_rt/accel/bvh_builder.h"
 
 #include <algorithm>
 #include <bit>

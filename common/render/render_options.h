@@ -26,9 +26,9 @@ struct RenderOptions {
     uint32_t sample_offset = 0;
     // When set, the render takes its samples in ranges from here instead of tracing
     // [sample_offset, sample_offset + spp) (the Vulkan engine's --device all shares one render's
-    // samples among devices this way, vulkan_rt/sample_share.h). It is called with the render's
-    // rate so far (pixel-samples per second; 0 before its first range) and returns the next
-    // range, or a count of 0 when none is left. Successive ranges ascend.
+    // samples among devices this way, vulkan_rt/renderer/sample_share.h). It is called with the
+    // render's rate so far (pixel-samples per second; 0 before its first range) and returns the
+    // next range, or a count of 0 when none is left. Successive ranges ascend.
     struct SampleGrant {
         uint32_t begin = 0, count = 0;
     };

@@ -1,5 +1,5 @@
 // Ray-primitive tests of the compute-mode traversal and the BVH node layout they run on.
-// vulkan_rt/bvh_builder.cpp fills the nodes; shaders/trace_bvh.glsl traverses them; the C++
+// vulkan_rt/accel/bvh_builder.cpp fills the nodes; shaders/trace_bvh.glsl traverses them; the C++
 // tests call the same functions.
 //
 // Node layout (Aila & Laine, "Understanding the Efficiency of Ray Traversal on GPUs", HPG
@@ -12,7 +12,7 @@
 //   absent             count == 0, ref == BVH_EMPTY (only in the root of a one-leaf tree)
 // Two levels: the top level (over instances, world space) and every mesh's bottom level (object
 // space) live in one node array; MeshInfo::bvh_root is the index of a mesh's root node. One
-// level (a scene without instancing, vulkan_rt/bvh_builder.h): one tree whose leaves hold the
+// level (a scene without instancing, vulkan_rt/accel/bvh_builder.h): one tree whose leaves hold the
 // triangles of every instance in world space.
 #ifndef TP_SHARED_INTERSECT_H
 #define TP_SHARED_INTERSECT_H

@@ -1,9 +1,9 @@
-// --device all without a device (vulkan_rt/sample_share.h, device_info.h): which devices a
+// --device all without a device (vulkan_rt/renderer/sample_share.h, device_info.h): which devices a
 // selector names, and how the samples are shared so that every sample is traced once and no
 // device waits long at the end.
 #include "util/error.h"
-#include "vulkan_rt/device_info.h"
-#include "vulkan_rt/sample_share.h"
+#include "vulkan_rt/device/device_info.h"
+#include "vulkan_rt/renderer/sample_share.h"
 
 #include <catch2/catch.hpp>
 

@@ -1,15 +1,15 @@
 // A pixel's accumulated sums must not depend on how its samples were split into submissions:
-// the batch planner follows measured time (vulkan_rt/batch_planner.h), and lavapipe repeats
-// dispatches cut short by its loop budget (shaders/accumulate.glsl), so two renders with one
-// seed see different splits, yet are promised the same bits (the stress suite's position
-// group and `compare --exact` between same-seed renders depend on it).
+// the batch planner follows measured time (vulkan_rt/renderer/batch_planner.h), and lavapipe
+// repeats dispatches cut short by its loop budget (shaders/accumulate.glsl), so two renders with
+// one seed see different splits, yet are promised the same bits (the stress suite's position group
+// and `compare --exact` between same-seed renders depend on it).
 #include "gpu_harness.h"
 
 #include "render/sampler.h"
 #include "scene/flatten.h"
 #include "scene/load.h"
 #include "shared/rng.h"
-#include "vulkan_rt/progressive_renderer.h"
+#include "vulkan_rt/view/progressive_renderer.h"
 
 #include <catch2/catch.hpp>
 

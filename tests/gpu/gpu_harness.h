@@ -3,7 +3,7 @@
 // call and validation_messages() must stay 0.
 #pragma once
 
-#include "vulkan_rt/shader_dispatch.h"
+#include "vulkan_rt/device/shader_dispatch.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -18,7 +18,7 @@ using tp::as_vector;
 using tp::bytes_of;
 using tp::HostBytes;
 
-// run_compute_shader (vulkan_rt/shader_dispatch.h) on gpu_context().
+// run_compute_shader (vulkan_rt/device/shader_dispatch.h) on gpu_context().
 std::vector<std::vector<uint8_t>> run_shader(const uint32_t* spirv, size_t spirv_bytes,
                                              const std::vector<HostBytes>& inputs,
                                              const std::vector<size_t>& output_bytes,

@@ -9,10 +9,10 @@
 #include "shared/intersect.h"
 #include "shared/surface.h"
 #include "util/error.h"
-#include "vulkan_rt/batch_planner.h"
-#include "vulkan_rt/bvh_builder.h"
-#include "vulkan_rt/device_info.h"
-#include "vulkan_rt/vk_error.h"
+#include "vulkan_rt/accel/bvh_builder.h"
+#include "vulkan_rt/device/device_info.h"
+#include "vulkan_rt/device/vk_error.h"
+#include "vulkan_rt/renderer/batch_planner.h"
 
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>

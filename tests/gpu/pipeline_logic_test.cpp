@@ -8,11 +8,11 @@
 #include "shaders/rt_interface.h"
 #include "shared/surface.h"
 #include "util/error.h"
-#include "vulkan_rt/accel_inputs.h"
-#include "vulkan_rt/device_info.h"
-#include "vulkan_rt/sbt_layout.h"
-#include "vulkan_rt/vk_mode.h"
-#include "vulkan_rt/vulkan_renderer.h"
+#include "vulkan_rt/accel/accel_inputs.h"
+#include "vulkan_rt/device/device_info.h"
+#include "vulkan_rt/pipeline/sbt_layout.h"
+#include "vulkan_rt/renderer/vk_mode.h"
+#include "vulkan_rt/renderer/vulkan_renderer.h"
 
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>

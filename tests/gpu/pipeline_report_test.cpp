@@ -1,4 +1,4 @@
-// What the driver says about the render pipeline (vulkan_rt/pipeline_report.h, docs/gpu.md):
+// What the driver says about the render pipeline (vulkan_rt/device/pipeline_report.h, docs/gpu.md):
 // VK_EXT_pipeline_creation_feedback in `--stats` (`pipeline_creation`), and
 // VK_KHR_pipeline_executable_properties through `--pipeline-stats` on render and on
 // `bench --specialization`. Lavapipe (CI) has the first and not the second: there the second

@@ -160,7 +160,7 @@ TEST_CASE("with the same seed both backends trace the same paths", "[gpu]") {
 }
 
 TEST_CASE("the wide BVH traces the CPU's paths and its images are consistent", "[gpu]") {
-    // --bvh wide (vulkan_rt/wide_bvh.h): the same-seed replay of the test above, and an
+    // --bvh wide (vulkan_rt/accel/wide_bvh.h): the same-seed replay of the test above, and an
     // independent-seed comparison as in the first test, on cornell (one-level BVH), spheres
     // (two levels) and cornell_spheres (its glass and mirror spheres: the longest paths).
     for (const char* scene : {"cornell", "spheres", "cornell_spheres"}) {

@@ -6,7 +6,7 @@
 // failure, and replaced.
 #include "shared/features.h"
 #include "support/test_paths.h"
-#include "vulkan_rt/pipeline_cache.h"
+#include "vulkan_rt/device/pipeline_cache.h"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>

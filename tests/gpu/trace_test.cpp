@@ -1,5 +1,5 @@
-// The compute mode's ray queries (vulkan_rt/ray_queries.h: the BVH built by
-// vulkan_rt/bvh_builder.cpp, traversed by shaders/trace_bvh.glsl, or in the compressed 8-wide
+// The compute mode's ray queries (vulkan_rt/renderer/ray_queries.h: the BVH built by
+// vulkan_rt/accel/bvh_builder.cpp, traversed by shaders/trace_bvh.glsl, or in the compressed 8-wide
 // layout by shaders/trace_cwbvh.glsl) against Embree's on the same scenes: every bundled scene
 // and a generated one with hundreds of instances, each in both layouts and with both shapes of
 // the BVH: two levels (the all-features shader) and one level (the shader specialized to a mask
@@ -20,8 +20,8 @@
 #include "shared/features.h"
 #include "shared/intersect.h"
 #include "shared/surface.h"
-#include "vulkan_rt/bvh_builder.h"
-#include "vulkan_rt/ray_queries.h"
+#include "vulkan_rt/accel/bvh_builder.h"
+#include "vulkan_rt/renderer/ray_queries.h"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>

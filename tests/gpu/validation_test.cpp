@@ -1,7 +1,7 @@
 // The validation plumbing itself: under TWINPATH_VALIDATION=1 (set by CTest) the Khronos layer
 // is on and every message it reports is counted, so that "zero messages" in the other tests
 // means something. The messages this test provokes on purpose are printed to its output.
-#include "vulkan_rt/context.h"
+#include "vulkan_rt/device/context.h"
 
 #include <catch2/catch.hpp>
 

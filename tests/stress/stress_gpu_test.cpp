@@ -5,9 +5,9 @@
 #include "stress_common.h"
 
 #include "support/test_paths.h"
-#include "vulkan_rt/context.h"
-#include "vulkan_rt/validation.h"
-#include "vulkan_rt/vulkan_renderer.h"
+#include "vulkan_rt/device/context.h"
+#include "vulkan_rt/device/validation.h"
+#include "vulkan_rt/renderer/vulkan_renderer.h"
 
 namespace tp::stress {
 namespace {

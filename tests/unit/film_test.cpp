@@ -104,8 +104,8 @@ TEST_CASE("film: add_batch equals repeated add_sample", "[film]") {
 }
 
 TEST_CASE("film: merge of two films equals one film of all their samples", "[film]") {
-    // --device all merges the devices' films (vulkan_rt/device_group.cpp). Two films of 700
-    // and 1300 samples with different means (0.5 and 2: the between-film term matters) against
+    // --device all merges the devices' films (vulkan_rt/renderer/device_group.cpp). Two films of
+    // 700 and 1300 samples with different means (0.5 and 2: the between-film term matters) against
     // the two-pass mean and M2 of all 2000 in long double. Welford's and the merge's rounding
     // grow like n eps: tolerance 8 n eps. A pixel empty in the merged-in film is unchanged.
     std::vector<double> a = samples(700, 0.5, 0.2, 11), b = samples(1300, 2.0, 0.3, 12);

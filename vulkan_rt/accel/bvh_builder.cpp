@@ -1,0 +1,274 @@
+#include "vulkan_rt/accel/bvh_builder.h"
+
+#include "scene/world_vertex.h"
+#include "shared/surface.h"
+#include "util/error.h"
+
+#include "vulkan_rt/accel/embree_tree.h"
+
+#include <algorithm>
+
+namespace tp {
+namespace {
+
+// A leaf item with its plane normal, which intersect_triangle_normal takes from the buffer
+// (shared/intersect.h).
+BvhTriangle leaf_triangle(vec3 v0, vec3 v1, vec3 v2, uint32_t primitive, uint32_t instance) {
+    BvhTriangle t{};
+    t.v0 = v0;
+    t.v1 = v1;
+    t.v2 = v2;
+    t.primitive = primitive;
+    t.instance = instance;
+    t.normal = triangle_plane_normal(v0, v1, v2);
+    return t;
+}
+
+BvhNode empty_node() {
+    BvhNode n{};
+    n.ref0 = BVH_EMPTY;
+    n.ref1 = BVH_EMPTY;
+    return n;
+}
+
+// Copies Embree's binary trees into the node layout of shared/intersect.h.
+class BinaryWriter {
+  public:
+    explicit BinaryWriter(std::vector<BvhNode>& nodes) : nodes_(&nodes) {}
+
+    // Appends the tree and returns its root node index and depth. A tree of one leaf gets a
+    // root node with that leaf and an absent second child; an empty one (root null), a root
+    // with no children.
+    uint32_t write(const TreeNode* top, const RTCBounds& all, const LeafEmitter& emit_leaf,
+                   uint32_t& depth) {
+        depth = 1;
+        const uint32_t root = uint32_t(nodes_->size());
+        nodes_->push_back(empty_node());
+        if (!top) return root;
+        if (top->count > 0) {
+            set_child(root, 0, all, static_cast<const TreeLeaf*>(top), emit_leaf, depth, 1);
+        } else {
+            flatten_inner(root, static_cast<const TreeInner*>(top), emit_leaf, depth, 1);
+        }
+        return root;
+    }
+
+  private:
+    void flatten_inner(uint32_t index, const TreeInner* n, const LeafEmitter& emit_leaf,
+                       uint32_t& depth, uint32_t level) {
+        depth = std::max(depth, level);
+        for (uint32_t c = 0; c < n->children; ++c) {
+            if (n->child[c]->count > 0) {
+                set_child(index, int(c), n->bounds[c], static_cast<const TreeLeaf*>(n->child[c]),
+                          emit_leaf, depth, level);
+            } else {
+                const uint32_t child = uint32_t(nodes_->size());
+                nodes_->push_back(empty_node());
+                flatten_inner(child, static_cast<const TreeInner*>(n->child[c]), emit_leaf, depth,
+                              level + 1);
+                write_child(index, int(c), n->bounds[c], child, 0);
+            }
+        }
+    }
+
+    void set_child(uint32_t index, int c, const RTCBounds& b, const TreeLeaf* leaf,
+                   const LeafEmitter& emit_leaf, uint32_t& depth, uint32_t level) {
+        depth = std::max(depth, level);
+        write_child(index, c, b, emit_leaf(leaf->items, leaf->count), leaf->count);
+    }
+
+    void write_child(uint32_t index, int c, const RTCBounds& b, uint32_t ref, uint32_t count) {
+        BvhNode& n = (*nodes_)[index];
+        const vec3 lo(b.lower_x, b.lower_y, b.lower_z), hi(b.upper_x, b.upper_y, b.upper_z);
+        if (c == 0) {
+            n.lo0 = lo;
+            n.hi0 = hi;
+            n.ref0 = ref;
+            n.count0 = count;
+        } else {
+            n.lo1 = lo;
+            n.hi1 = hi;
+            n.ref1 = ref;
+            n.count1 = count;
+        }
+    }
+
+    std::vector<BvhNode>* nodes_;
+};
+
+// Builds the trees of one BvhBuild in its layout: Embree's binary tree as it is, or an 8-ary
+// one with leaves of at most 3 triangles for the compressed wide nodes (wide_bvh.h).
+class Builder {
+  public:
+    explicit Builder(BvhBuild& out) : out_(out) {}
+
+    // Appends a tree over `prims` in the chosen layout; returns its root node index and depth.
+    // Binary leaves hold up to `max_binary_leaf` items.
+    uint32_t build(std::vector<RTCBuildPrimitive> prims, uint32_t max_binary_leaf,
+                   uint32_t max_depth, uint32_t& depth, const LeafEmitter& emit_leaf) {
+        const bool wide = out_.layout == BvhLayout::wide;
+        const TreeNode* top =
+            prims.empty() ? nullptr
+                          : embree_.build(prims, wide ? 8 : 2,
+                                          wide ? CWBVH_MAX_LEAF : max_binary_leaf, max_depth);
+        const RTCBounds all = bounds_of(prims);
+        if (wide) return write_wide_tree(out_.wide_nodes, top, all, emit_leaf, depth);
+        return BinaryWriter(out_.nodes).write(top, all, emit_leaf, depth);
+    }
+
+  private:
+    BvhBuild& out_;
+    EmbreeTreeBuilder embree_;
+};
+
+// Binary leaves of at most 4 triangles: a leaf is then at most 192 contiguous bytes.
+constexpr uint32_t kMaxTrianglesPerLeaf = 4;
+// Depth limits that keep depth(top) + depth(bottom) + 2 within the traversal stack of the
+// layout (BVH_STACK_SIZE, CWBVH_STACK_SIZE); Embree makes its last levels balanced when a
+// branch approaches the limit.
+uint32_t max_bottom_depth(BvhLayout layout) {
+    return layout == BvhLayout::wide ? 20 : 40;
+}
+uint32_t max_top_depth(BvhLayout layout) {
+    return layout == BvhLayout::wide ? 10 : 22;
+}
+
+// World box of an object box under an instance transform: the 8 corners transformed, padded by
+// 2^-20 of the largest coordinate so that the float rounding of the transform (a few ulp)
+// cannot make the box miss what the object-space test then hits.
+void world_box(const Instance& inst, vec3 lo, vec3 hi, vec3& wlo, vec3& whi) {
+    wlo = vec3(FLOAT_MAX);
+    whi = vec3(-FLOAT_MAX);
+    for (int i = 0; i < 8; ++i) {
+        const vec3 p((i & 1) ? hi.x : lo.x, (i & 2) ? hi.y : lo.y, (i & 4) ? hi.z : lo.z);
+        const vec3 w = instance_point_to_world(inst, p);
+        wlo = glm::min(wlo, w);
+        whi = glm::max(whi, w);
+    }
+    const vec3 m = glm::max(glm::abs(wlo), glm::abs(whi));
+    const float pad = std::max(m.x, std::max(m.y, m.z)) * (1.0f / 1048576.0f);
+    wlo -= vec3(pad);
+    whi += vec3(pad);
+}
+
+// The tree over every instance's triangles in world space (one level): each leaf item carries
+// its instance, since no instance marker leads to it.
+void build_one_level(const FlatScene& scene, Builder& builder, BvhBuild& out) {
+    size_t count = 0;
+    for (const Instance& inst : scene.instances) count += scene.meshes[inst.mesh].triangle_count;
+    std::vector<BvhTriangle> world;
+    std::vector<RTCBuildPrimitive> prims;
+    world.reserve(count);
+    prims.reserve(count);
+    std::vector<vec3> v;
+    for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+        const Instance& inst = scene.instances[i];
+        const MeshInfo& mesh = scene.meshes[inst.mesh];
+        v.resize(mesh.vertex_count);
+        for (uint32_t k = 0; k < mesh.vertex_count; ++k)
+            v[k] = world_vertex(inst, scene.positions[mesh.first_vertex + k]);
+        for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
+            const uvec3 tri = scene.triangles[mesh.first_triangle + t];
+            const BvhTriangle bt = leaf_triangle(v[tri.x], v[tri.y], v[tri.z], t, i);
+            prims.push_back(make_primitive(glm::min(bt.v0, glm::min(bt.v1, bt.v2)),
+                                           glm::max(bt.v0, glm::max(bt.v1, bt.v2)),
+                                           uint32_t(world.size())));
+            world.push_back(bt);
+        }
+    }
+    out.top_root =
+        builder.build(std::move(prims), kMaxTrianglesPerLeaf, max_bottom_depth(out.layout),
+                      out.bottom_depth, [&](const uint32_t* ids, uint32_t n) {
+                          const uint32_t first = uint32_t(out.triangles.size());
+                          for (uint32_t k = 0; k < n; ++k) out.triangles.push_back(world[ids[k]]);
+                          return first;
+                      });
+    out.one_level = true;
+}
+
+// One tree per mesh in object space and, behind them, the top tree over the instances' world
+// boxes.
+void build_two_level(const FlatScene& scene, Builder& builder, BvhBuild& out) {
+    std::vector<vec3> mesh_lo(scene.meshes.size(), vec3(FLOAT_MAX)),
+        mesh_hi(scene.meshes.size(), vec3(-FLOAT_MAX));
+    for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        const MeshInfo& mesh = scene.meshes[m];
+        std::vector<RTCBuildPrimitive> prims;
+        prims.reserve(mesh.triangle_count);
+        for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
+            const uvec3 tri = scene.triangles[mesh.first_triangle + t];
+            const vec3 a = scene.positions[mesh.first_vertex + tri.x];
+            const vec3 b = scene.positions[mesh.first_vertex + tri.y];
+            const vec3 c = scene.positions[mesh.first_vertex + tri.z];
+            const vec3 lo = glm::min(a, glm::min(b, c)), hi = glm::max(a, glm::max(b, c));
+            prims.push_back(make_primitive(lo, hi, t));
+            mesh_lo[m] = glm::min(mesh_lo[m], lo);
+            mesh_hi[m] = glm::max(mesh_hi[m], hi);
+        }
+        uint32_t depth = 0;
+        out.mesh_roots.push_back(builder.build(
+            std::move(prims), kMaxTrianglesPerLeaf, max_bottom_depth(out.layout), depth,
+            [&](const uint32_t* ids, uint32_t n) {
+                const uint32_t first = uint32_t(out.triangles.size());
+                for (uint32_t i = 0; i < n; ++i) {
+                    const uvec3 tri = scene.triangles[mesh.first_triangle + ids[i]];
+                    const vec3* p = &scene.positions[mesh.first_vertex];
+                    out.triangles.push_back(leaf_triangle(p[tri.x], p[tri.y], p[tri.z], ids[i], 0));
+                }
+                return first;
+            }));
+        out.bottom_depth = std::max(out.bottom_depth, depth);
+    }
+
+    std::vector<RTCBuildPrimitive> instances;
+    for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+        const Instance& inst = scene.instances[i];
+        if (scene.meshes[inst.mesh].triangle_count == 0) continue;
+        vec3 lo, hi;
+        world_box(inst, mesh_lo[inst.mesh], mesh_hi[inst.mesh], lo, hi);
+        instances.push_back(make_primitive(lo, hi, i));
+    }
+    // Binary leaves name their instance directly (count 1); a wide leaf's items are
+    // consecutive records of the triangle array whose `instance` names one (cwbvh.h).
+    const bool wide = out.layout == BvhLayout::wide;
+    out.top_root = builder.build(std::move(instances), 1, max_top_depth(out.layout), out.top_depth,
+                                 [&](const uint32_t* ids, uint32_t n) {
+                                     if (!wide) return ids[0];
+                                     const uint32_t first = uint32_t(out.triangles.size());
+                                     for (uint32_t k = 0; k < n; ++k) {
+                                         BvhTriangle record{};
+                                         record.instance = ids[k];
+                                         out.triangles.push_back(record);
+                                     }
+                                     return first;
+                                 });
+}
+
+} // namespace
+
+BvhBuild build_bvh(const FlatScene& scene, uint32_t features, BvhLayout layout) {
+    BvhBuild out;
+    out.layout = layout;
+    Builder builder(out);
+    if (feature_on(features, FEATURE_INSTANCING))
+        build_two_level(scene, builder, out);
+    else
+        build_one_level(scene, builder, out);
+    const uint32_t stack = layout == BvhLayout::wide ? CWBVH_STACK_SIZE : BVH_STACK_SIZE;
+    if (out.top_depth + out.bottom_depth + 2 > stack)
+        input_error("the scene's BVH is too deep for the GPU traversal stack ({} + {} levels)",
+                    out.top_depth, out.bottom_depth);
+    return out;
+}
+
+BvhLayout parse_bvh_layout(const std::string& name) {
+    if (name == "binary") return BvhLayout::binary;
+    if (name == "wide") return BvhLayout::wide;
+    input_error("unknown BVH layout '{}' (expected binary or wide)", name);
+}
+
+const char* bvh_layout_name(BvhLayout layout) {
+    return layout == BvhLayout::wide ? "wide" : "binary";
+}
+
+} // namespace tp

@@ -1,0 +1,61 @@
+// The compute mode's acceleration structure, built on the host with Embree's BVH builder API
+// (rtcBuildBVH, binned SAH, embree_tree.h) in one of two layouts: binary nodes (shared/intersect.h,
+// traversed by shaders/trace_bvh.glsl) or compressed 8-wide nodes (wide_bvh.h, traversed by
+// shaders/trace_cwbvh.glsl). Either comes in the shape that the render's feature mask asks for
+// (issue 9):
+//   two levels (FEATURE_INSTANCING set): one BVH per mesh in object space, an instanced mesh
+//     stored once, and one over the instances' world boxes;
+//   one level (FEATURE_INSTANCING clear): one BVH over the triangles of every instance in world
+//     space (scene/world_vertex.h, the vertices of the CPU engine's one-level Embree scene),
+//     each leaf triangle naming its instance; no top level, no instance markers, no transform
+//     of the ray. It renders any scene, but copies an instanced mesh once per instance: the
+//     renderers use it where the scene's mask has no instancing, so nothing is copied.
+#pragma once
+
+#include "scene/flatten.h"
+#include "shared/features.h"
+#include "shared/intersect.h"
+#include "vulkan_rt/accel/wide_bvh.h"
+
+#include <cstdint>
+#include <string>
+#include <vector>
+
+namespace tp {
+
+enum class BvhLayout { binary, wide };
+
+// "binary" or "wide" (the --bvh option); InputError for anything else.
+BvhLayout parse_bvh_layout(const std::string& name);
+const char* bvh_layout_name(BvhLayout layout);
+
+struct BvhBuild {
+    BvhLayout layout = BvhLayout::binary;
+    // The nodes of the layout (the other array stays empty); two levels: each mesh's tree,
+    // then the top level.
+    std::vector<BvhNode> nodes;
+    std::vector<WideBvhNode> wide_nodes;
+    // Leaf items, in leaf order; with the wide layout and two levels also the top tree's
+    // instance records (wide_bvh.h).
+    std::vector<BvhTriangle> triangles;
+    // Two levels, per FlatScene mesh: its root node (MeshInfo::bvh_root); one level: empty.
+    std::vector<uint32_t> mesh_roots;
+    uint32_t top_root = 0;     // where traversal starts (BatchParams::bvh_top_root)
+    uint32_t top_depth = 0;    // inner-node levels of the top tree; 0 with one level
+    uint32_t bottom_depth = 0; // the deepest mesh tree, or the one-level tree
+    bool one_level = false;
+
+    uint64_t bytes() const {
+        return nodes.size() * sizeof(BvhNode) + wide_nodes.size() * sizeof(WideBvhNode) +
+               triangles.size() * sizeof(BvhTriangle);
+    }
+};
+
+// Two levels when `features` (shared/features.h) has FEATURE_INSTANCING, else one level: the
+// shape that the render shader specialized to `features` traverses. Throws RuntimeError when
+// Embree fails and InputError when the trees are too deep for the shader's traversal stack
+// (BVH_STACK_SIZE, CWBVH_STACK_SIZE).
+BvhBuild build_bvh(const FlatScene& scene, uint32_t features = FEATURES_ALL,
+                   BvhLayout layout = BvhLayout::binary);
+
+} // namespace tp

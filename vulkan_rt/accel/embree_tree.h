@@ -1,0 +1,67 @@
+// Embree's BVH builder API (rtcBuildBVH, binned SAH) driven into a plain tree that the compute
+// mode's layouts then store: binary nodes (bvh_builder.cpp) or compressed 8-wide nodes
+// (wide_bvh.cpp). Internal to vulkan_rt: the one place that includes Embree's builder.
+#pragma once
+
+#include "shared/math.h"
+
+#include <embree3/rtcore.h>
+#include <embree3/rtcore_builder.h>
+
+#include <cstdint>
+#include <functional>
+#include <vector>
+
+namespace tp {
+
+// A node of the built tree: an inner node with `children` children (2 .. the branching factor)
+// or a leaf with `count` > 0 primitive IDs. The memory belongs to the EmbreeTreeBuilder.
+struct TreeNode {
+    uint32_t count = 0; // 0: TreeInner; > 0: TreeLeaf with that many items
+};
+struct TreeInner : TreeNode {
+    uint32_t children = 0;
+    const TreeNode** child = nullptr;
+    RTCBounds* bounds = nullptr; // child[i]'s box
+};
+struct TreeLeaf : TreeNode {
+    uint32_t* items = nullptr; // RTCBuildPrimitive::primID of each item
+};
+
+// Stores a leaf's items (primitive IDs) where the layout keeps them and returns the index of
+// the first; the items of one leaf are stored consecutively.
+using LeafEmitter = std::function<uint32_t(const uint32_t* ids, uint32_t count)>;
+
+RTCBuildPrimitive make_primitive(vec3 lo, vec3 hi, uint32_t id);
+
+// The box around every primitive's box.
+RTCBounds bounds_of(const std::vector<RTCBuildPrimitive>& prims);
+
+class EmbreeTreeBuilder {
+  public:
+    EmbreeTreeBuilder();
+    ~EmbreeTreeBuilder();
+    EmbreeTreeBuilder(const EmbreeTreeBuilder&) = delete;
+    EmbreeTreeBuilder& operator=(const EmbreeTreeBuilder&) = delete;
+
+    // Builds a tree over `prims` (not empty) with at most `branching` children per inner node
+    // and `max_leaf` items per leaf; valid until the next build. The root may be a leaf.
+    // Throws RuntimeError when Embree fails.
+    const TreeNode* build(std::vector<RTCBuildPrimitive>& prims, uint32_t branching,
+                          uint32_t max_leaf, uint32_t max_depth);
+
+  private:
+    RTCDevice device_ = nullptr;
+    RTCBVH bvh_ = nullptr;
+};
+
+// Appends the compressed 8-wide nodes of a tree built with branching 8 and leaves of at most 3
+// items (wide_bvh.h) to `nodes` and returns the root's index; `root_bounds` is the box of the
+// whole tree, `depth` the number of node levels. An empty tree (root null) is one node with no
+// children.
+struct WideBvhNode;
+uint32_t write_wide_tree(std::vector<WideBvhNode>& nodes, const TreeNode* root,
+                         const RTCBounds& root_bounds, const LeafEmitter& emit_leaf,
+                         uint32_t& depth);
+
+} // namespace tp

@@ -1,0 +1,50 @@
+// A compute pipeline from embedded SPIR-V whose descriptor set 0 is `binding_count` storage
+// buffers (bindings 0..n-1) and whose push constants are one block of `push_bytes` bytes.
+// Render shaders get the scene's feature mask as a specialization constant (features.glsl) and
+// are compiled through the on-disk pipeline cache (pipeline_cache.h). The driver's report on the
+// pipeline (creation feedback, statistics on request) is kept (pipeline_report.h).
+#pragma once
+
+#include "render/stats.h"
+#include "vulkan_rt/device/barriers.h"
+#include "vulkan_rt/device/buffer.h"
+#include "vulkan_rt/device/context.h"
+#include "vulkan_rt/device/pipeline_bindings.h"
+#include "vulkan_rt/device/pipeline_cache.h"
+
+#include <cstddef>
+#include <cstdint>
+
+namespace tp {
+
+class ComputeProgram {
+  public:
+    // Specialized to `features` (shared/features.h; a shader without the constant ignores it)
+    // and, when `cached` (the render shaders), compiled through the pipeline cache on disk.
+    ComputeProgram(const VulkanContext& ctx, const uint32_t* spirv, size_t spirv_bytes,
+                   uint32_t binding_count, uint32_t push_bytes, uint32_t features, bool cached);
+    ~ComputeProgram();
+    ComputeProgram(const ComputeProgram&) = delete;
+    ComputeProgram& operator=(const ComputeProgram&) = delete;
+
+    // Points storage-buffer slot `binding` at the whole of `buffer`.
+    void bind(uint32_t binding, const Buffer& buffer) { bindings_.write_buffer(binding, buffer); }
+
+    // Binds the pipeline and the set, pushes the constants and dispatches.
+    void record_dispatch(VkCommandBuffer cmd, const void* push, uint32_t groups_x,
+                         uint32_t groups_y, uint32_t groups_z) const;
+
+    // The pipeline cache's part in creating this pipeline (empty file: not cached).
+    const PipelineCacheUse& cache_use() const { return cache_use_; }
+    // What the driver said about creating it (pipeline_report.h).
+    const PipelineReport& report() const { return report_; }
+
+  private:
+    VkDevice device_;
+    PipelineBindings bindings_;
+    VkPipeline pipeline_ = VK_NULL_HANDLE;
+    PipelineCacheUse cache_use_;
+    PipelineReport report_;
+};
+
+} // namespace tp

@@ -1,0 +1,45 @@
+// One dispatch of a small compute shader over plain storage buffers, for the shaders that check
+// the shared code on a device: the GPU tests (tests/gpu) and the stress suite's edge-aimed rays
+// and BRDF sweeps (stress), which `twinpath bench --stress` also runs on the GPU machine.
+#pragma once
+
+#include "shared/features.h"
+#include "vulkan_rt/device/buffer.h"
+#include "vulkan_rt/device/context.h"
+
+#include <cstddef>
+#include <cstdint>
+#include <cstring>
+#include <vector>
+
+namespace tp {
+
+struct HostBytes {
+    const void* data;
+    size_t bytes;
+};
+
+template <typename T>
+HostBytes bytes_of(const std::vector<T>& v) {
+    return {v.data(), v.size() * sizeof(T)};
+}
+
+// Dispatches `groups` workgroups of `spirv` with storage buffers bound in order: first
+// `device` (buffers already on the device), then the inputs (uploaded), then outputs of the
+// given sizes (zero-filled), and returns the outputs. `features` is the feature mask of a
+// shader that includes the render shaders' features.glsl (with trace_bvh.glsl: the BVH's shape).
+std::vector<std::vector<uint8_t>>
+run_compute_shader(const VulkanContext& ctx, const uint32_t* spirv, size_t spirv_bytes,
+                   const std::vector<HostBytes>& inputs, const std::vector<size_t>& output_bytes,
+                   const void* push, uint32_t push_bytes, uint32_t groups,
+                   const std::vector<const Buffer*>& device = {}, uint32_t features = FEATURES_ALL);
+
+// The output as an array of T.
+template <typename T>
+std::vector<T> as_vector(const std::vector<uint8_t>& bytes) {
+    std::vector<T> v(bytes.size() / sizeof(T));
+    std::memcpy(v.data(), bytes.data(), v.size() * sizeof(T));
+    return v;
+}
+
+} // namespace tp
