@@ -15,6 +15,10 @@ build_pkgs=(
   # tools (an error), Imath's (through OpenEXR) its Python module (a warning).
   openimageio-tools python3-imath
   nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libfmt-dev
+  # glTF (common/scene/gltf_resources.cpp): tinygltf 2.7.0 as a shared library; its data: URI
+  # and image decoders (stb_image, through libstb0) are used, its header needs neither
+  # nlohmann-json nor stb.
+  libtinygltf-dev
   embree-tools
   # scripts/demo.sh reads `twinpath info --json` with python3.
   python3

@@ -2,8 +2,7 @@
 
 #include "image/texture_io.h"
 #include "scene/generators.h"
-#include "scene/json_duplicate_keys.h"
-#include "scene/json_sax.h"
+#include "scene/json_reader.h"
 #include "scene/obj_loader.h"
 #include "shared/math.h"
 #include "util/error.h"
@@ -11,13 +10,9 @@
 #include <glm/gtc/matrix_transform.hpp>
 #include <nlohmann/json.hpp>
 
-#include <algorithm>
 #include <cmath>
 #include <filesystem>
-#include <fstream>
-#include <iterator>
 #include <map>
-#include <set>
 
 namespace fs = std::filesystem;
 using nlohmann::json;
@@ -25,141 +20,7 @@ using nlohmann::json;
 namespace tp {
 namespace {
 
-// Reads one JSON file; every accessor checks type, range and unknown keys and reports the
-// field path on failure.
-class Reader {
-  public:
-    explicit Reader(std::string file) : file_(std::move(file)) {}
-
-    [[noreturn]] void fail(const std::string& field, const std::string& what) const {
-        throw InputError(fmt::format("{}: {}: {}", file_, field, what));
-    }
-
-    void keys(const json& j, const std::string& field,
-              std::initializer_list<const char*> allowed) const {
-        if (!j.is_object()) fail(field, "expected an object");
-        std::set<std::string> ok(allowed.begin(), allowed.end());
-        for (const auto& item : j.items())
-            if (!ok.count(item.key())) {
-                std::string list;
-                for (const char* a : allowed)
-                    list += fmt::format("{}{}", list.empty() ? "" : ", ", a);
-                fail(join(field, item.key()),
-                     fmt::format("unknown key (expected one of: {})", list));
-            }
-    }
-
-    static std::string join(const std::string& a, const std::string& b) {
-        return a.empty() ? b : a + "." + b;
-    }
-
-    float number(const json& j, const std::string& field) const {
-        return float(coordinate(j, field));
-    }
-
-    // A number of a position, kept in double (scene/scene.h) but within float's range.
-    double coordinate(const json& j, const std::string& field) const {
-        if (!j.is_number()) fail(field, "expected a number");
-        const double v = j.get<double>();
-        if (!std::isfinite(v) || std::abs(v) > 3.4e38) fail(field, "must be a finite float");
-        return v;
-    }
-
-    float number(const json& j, const std::string& field, float lo, float hi) const {
-        const float v = number(j, field);
-        if (v < lo || v > hi) fail(field, fmt::format("must lie in [{}, {}], got {}", lo, hi, v));
-        return v;
-    }
-
-    uint32_t count(const json& j, const std::string& field, uint32_t lo, uint32_t hi) const {
-        if (!j.is_number_integer()) fail(field, "expected an integer");
-        // Unsigned values above 2^63 would wrap to negative as long long.
-        const bool in_range = j.is_number_unsigned()
-                                  ? j.get<uint64_t>() >= lo && j.get<uint64_t>() <= hi
-                                  : j.get<int64_t>() >= lo && j.get<int64_t>() <= hi;
-        if (!in_range) fail(field, fmt::format("must lie in [{}, {}], got {}", lo, hi, j.dump()));
-        return uint32_t(j.get<uint64_t>());
-    }
-
-    vec3 vector3(const json& j, const std::string& field) const {
-        if (!j.is_array() || j.size() != 3) fail(field, "expected an array of 3 numbers");
-        return vec3(number(j[0], field + "[0]"), number(j[1], field + "[1]"),
-                    number(j[2], field + "[2]"));
-    }
-
-    glm::dvec3 position(const json& j, const std::string& field) const {
-        if (!j.is_array() || j.size() != 3) fail(field, "expected an array of 3 numbers");
-        return glm::dvec3(coordinate(j[0], field + "[0]"), coordinate(j[1], field + "[1]"),
-                          coordinate(j[2], field + "[2]"));
-    }
-
-    vec3 color(const json& j, const std::string& field) const {
-        const vec3 c = vector3(j, field);
-        if (c.x < 0 || c.y < 0 || c.z < 0) fail(field, "colors must not be negative");
-        return c;
-    }
-
-    std::string string(const json& j, const std::string& field) const {
-        if (!j.is_string()) fail(field, "expected a string");
-        return j.get<std::string>();
-    }
-
-    bool boolean(const json& j, const std::string& field) const {
-        if (!j.is_boolean()) fail(field, "expected true or false");
-        return j.get<bool>();
-    }
-
-    const json& required(const json& j, const std::string& field, const char* key) const {
-        if (!j.contains(key)) fail(join(field, key), "is required");
-        return j[key];
-    }
-
-    fs::path file_path(const json& j, const std::string& field) const {
-        fs::path p = string(j, field);
-        if (p.is_relative()) p = fs::path(file_).parent_path() / p;
-        if (!fs::exists(p)) fail(field, fmt::format("file '{}' does not exist", p.string()));
-        return p;
-    }
-
-    const std::string& file() const { return file_; }
-
-  private:
-    std::string file_;
-};
-
-// Byte offset of the first error in a JSON text, from nlohmann's SAX interface.
-struct ErrorOffset : JsonSaxAcceptAll {
-    size_t offset = 0;
-    bool parse_error(std::size_t position, const std::string&,
-                     const nlohmann::detail::exception&) override {
-        offset = position;
-        return false;
-    }
-};
-
-json parse_file(const std::string& path) {
-    std::ifstream in(path);
-    if (!in) input_error("{}: cannot open file", path);
-    const std::string text{std::istreambuf_iterator<char>(in), std::istreambuf_iterator<char>()};
-    try {
-        json root = json::parse(text);
-        reject_duplicate_keys(path, text);
-        return root;
-    } catch (const json::parse_error& e) {
-        // nlohmann's message carries "at line L, column C".
-        input_error("{}: malformed JSON: {}", path, e.what());
-    } catch (const json::out_of_range& e) {
-        // A number beyond double's range (1e999) is reported without a position; the SAX
-        // interface has its byte offset.
-        ErrorOffset where;
-        json::sax_parse(text, &where);
-        const size_t end = std::min(where.offset, text.size());
-        const size_t line = 1 + size_t(std::count(text.begin(), text.begin() + long(end), '\n'));
-        const size_t line_start = text.rfind('\n', end == 0 ? 0 : end - 1);
-        const size_t column = line_start == std::string::npos ? end : end - line_start - 1;
-        input_error("{}: malformed JSON at line {}, column {}: {}", path, line, column, e.what());
-    }
-}
+using Reader = JsonReader;
 
 // A texture file named by `field`: a file that exists but cannot be read is reported at the
 // field that names it, not only by its own path.
@@ -374,7 +235,7 @@ Material read_material(const Reader& r, const json& j, const std::string& field,
 } // namespace
 
 Scene load_json_scene(const std::string& path, std::vector<std::string>& warnings) {
-    const json root = parse_file(path);
+    const json root = parse_json_file(path);
     const Reader r(path);
     r.keys(root, "",
            {"camera", "film", "render", "textures", "materials", "meshes", "objects", "lights",

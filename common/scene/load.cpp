@@ -1,10 +1,13 @@
 #include "scene/load.h"
 
+#include "scene/gltf_loader.h"
 #include "scene/json_loader.h"
 #include "scene/obj_loader.h"
 #include "shared/math.h"
 #include "util/error.h"
 
+#include <algorithm>
+#include <cctype>
 #include <cstdlib>
 #include <filesystem>
 
@@ -30,8 +33,11 @@ std::string resolve_scene_path(const std::string& arg) {
     std::error_code ec;
     if (fs::is_directory(arg, ec)) input_error("{}: is a directory, not a scene file", arg);
     if (fs::exists(arg)) return arg;
-    const fs::path bundled = fs::path(bundled_scenes_dir()) / (arg + ".json");
-    if (arg.find('/') == std::string::npos && fs::exists(bundled)) return bundled.string();
+    if (arg.find('/') == std::string::npos)
+        for (const char* ext : {".json", ".gltf", ".glb"}) {
+            const fs::path bundled = fs::path(bundled_scenes_dir()) / (arg + ext);
+            if (fs::exists(bundled)) return bundled.string();
+        }
     input_error("{}: no such scene file or bundled scene (bundled scenes are in {})", arg,
                 bundled_scenes_dir());
 }
@@ -52,32 +58,31 @@ Scene load_obj_scene(const std::string& path, std::vector<std::string>& warnings
         o.material = part.material;
         scene.objects.push_back(o);
     }
-    bool emits = false;
-    for (const Object& o : scene.objects)
-        emits = emits || max3(scene.materials[o.material].ke) > 0.0f;
-    if (!emits) {
-        scene.environment.kind = EnvironmentKind::Constant;
-        scene.environment.radiance = vec3(1.0f);
-        warnings.push_back(
-            fmt::format("{}: no emissive material: lighting it with a constant white "
-                        "environment of radiance 1",
-                        path));
-    }
+    light_if_unlit(scene, warnings);
     return scene; // camera.given stays false: flatten() frames the scene
 }
 
 } // namespace
 
-Scene load_scene(const std::string& path_or_name, std::vector<std::string>& warnings) {
+Scene load_scene(const std::string& path_or_name, std::vector<std::string>& warnings,
+                 const LoadOptions& options) {
     const std::string path = resolve_scene_path(path_or_name);
-    const std::string ext = fs::path(path).extension().string();
+    std::string ext = fs::path(path).extension().string();
+    std::transform(ext.begin(), ext.end(), ext.begin(),
+                   [](unsigned char c) { return char(std::tolower(c)); });
+    const bool gltf = ext == ".gltf" || ext == ".glb";
+    if (options.camera && !gltf)
+        input_error("{}: --camera picks a camera of a glTF file (.gltf, .glb)", path);
     Scene scene;
     if (ext == ".json")
         scene = load_json_scene(path, warnings);
-    else if (ext == ".obj" || ext == ".OBJ")
+    else if (ext == ".obj")
         scene = load_obj_scene(path, warnings);
+    else if (gltf)
+        scene = load_gltf_scene(path, GltfOptions{options.camera}, warnings);
     else
-        input_error("{}: unknown scene format '{}' (expected .json or .obj)", path, ext);
+        input_error("{}: unknown scene format '{}' (expected .json, .obj, .gltf or .glb)", path,
+                    ext);
     if (scene.skipped_triangles > 0)
         warnings.push_back(fmt::format("{}: skipped {} degenerate (zero-area) triangle(s)", path,
                                        scene.skipped_triangles));

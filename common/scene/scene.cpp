@@ -51,6 +51,17 @@ void validate_material(const Material& m, const std::string& where) {
         input_error("{}: a mirror's Ks must be <= 1, got {}", where, max3(m.ks));
 }
 
+void light_if_unlit(Scene& scene, std::vector<std::string>& warnings) {
+    if (!scene.lights.empty() || scene.environment.kind != EnvironmentKind::None) return;
+    for (const Object& o : scene.objects)
+        if (max3(scene.materials[o.material].ke) > 0.0f) return;
+    scene.environment.kind = EnvironmentKind::Constant;
+    scene.environment.radiance = vec3(1.0f);
+    warnings.push_back(fmt::format(
+        "{}: no emissive material: lighting it with a constant white environment of radiance 1",
+        scene.path));
+}
+
 void finalize_mesh(Mesh& mesh, const std::string& where, uint64_t& skipped_triangles) {
     const size_t nv = mesh.positions.size();
     if (!mesh.normals.empty() && mesh.normals.size() != nv)

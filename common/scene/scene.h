@@ -81,6 +81,10 @@ struct Scene {
     std::vector<LightDesc> lights; // emitters and the environment are derived
     EnvironmentDesc environment;
     uint64_t skipped_triangles = 0; // degenerate triangles dropped while loading
+    // What an imported format (glTF) gives and twinpath does not render, for `twinpath info`:
+    // per material (parallel to `materials`, or empty) and for the scene as a whole.
+    std::vector<std::vector<std::string>> material_dropped;
+    std::vector<std::string> dropped;
 };
 
 // A material with every field at its neutral value: black Phong, ior 1.5, tf 1.
@@ -89,6 +93,11 @@ Material default_material();
 // Checks what a material must satisfy (finite, non-negative, kd + ks <= 1 per channel,
 // ns >= 0, ior > 0) and throws InputError naming `where` otherwise.
 void validate_material(const Material& m, const std::string& where);
+
+// A scene in which nothing emits light (no explicit light, no emissive material an object
+// uses, no environment) is lit by a constant white environment of radiance 1, with a warning:
+// OBJ and glTF files often carry no lights.
+void light_if_unlit(Scene& scene, std::vector<std::string>& warnings);
 
 // Drops zero-area triangles (counted in scene.skipped_triangles) and checks indices and that
 // every attribute is finite; `where` names the source in error messages.

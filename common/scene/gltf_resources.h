@@ -1,0 +1,40 @@
+// The binary data of a glTF asset: its buffers (the GLB's BIN chunk, base64 data: URIs, or
+// files next to the asset) and its images, decoded on request. tinygltf (Debian's
+// libtinygltf-dev) decodes the data: URIs and the images (PNG, JPEG, BMP, GIF through its
+// stb_image loader); the sizes and the file names are checked here, and errors name the field.
+#pragma once
+
+#include "image/texture.h"
+#include "scene/gltf_document.h"
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace tp {
+
+class GltfResources {
+  public:
+    // Reads every buffer of `doc` and checks that each has at least its byteLength; `bin` is
+    // the GLB's BIN chunk (buffer 0 without a uri). Keeps a reference to `doc`, and `bin` must
+    // outlive this object.
+    GltfResources(const GltfDocument& doc, std::string_view bin, bool has_bin);
+
+    // The bytes of buffer view `view` (inside its buffer: checked when the document was read).
+    std::string_view view_bytes(uint32_t view) const;
+
+    // Image `image` as linear RGB: its 8- or 16-bit channels are sRGB-encoded (glTF 2.0,
+    // section 3.9.3: base colour and emissive textures), alpha is dropped. `used_by` names the
+    // field that needs it, for the error when the image is missing or cannot be decoded.
+    Texture decode_srgb_image(uint32_t image, const std::string& used_by) const;
+
+  private:
+    const GltfDocument& doc_;
+    std::vector<std::string> owned_; // buffers read from files or data: URIs
+    std::vector<std::string_view> buffers_;
+};
+
+// A uri's percent-encoded bytes decoded (RFC 3986, section 2.1: "%20" is a space).
+std::string gltf_percent_decode(std::string_view uri);
+
+} // namespace tp
