@@ -56,7 +56,8 @@ Subcommand add_bench_command(CLI::App& app) {
     c->add_flag("--pipeline-stats", o.pipeline_stats,
                 "Specialization: the Vulkan driver's statistics of both variants' pipelines "
                 "(register counts, ...; docs/gpu.md)");
-    c->add_option("--scenes", o.scenes, "Scenes: " + catalogue_names() + ", or .json/.obj files")
+    c->add_option("--scenes", o.scenes,
+                  "Scenes: " + catalogue_names() + ", or .json/.obj/.gltf/.glb files")
         ->delimiter(',')
         ->capture_default_str();
     c->add_option("--backends", o.backends,

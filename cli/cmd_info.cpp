@@ -1,14 +1,17 @@
 // twinpath info [--json]: what this build can do and which devices it sees.
 // twinpath info SCENE [--json]: what the scene holds and which features it uses (issue 9:
-// the features the renderers specialize their path loop to).
+// the features the renderers specialize their path loop to), each material as the engines see
+// it and, for glTF, what the file gives that is not rendered (issue 37), and the load time.
 #include "commands.h"
 
 #include "scene/features.h"
 #include "scene/flatten.h"
 #include "scene/load.h"
+#include "shared/math.h"
 #include "util/error.h"
 #include "vulkan_rt/renderer/vulkan_renderer.h"
 
+#include <chrono>
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
@@ -43,10 +46,31 @@ nlohmann::json vulkan_json() {
     return v;
 }
 
-// The scene's size, lights and features.
+// What a material is, as the engines see it: "phong Kd (0.5, 0.5, 0.5) Ks (0.04, ...) Ns 7.5".
+std::string describe(const Material& m, const Scene& scene) {
+    auto rgb = [](const vec3& c) { return fmt::format("({:.4g}, {:.4g}, {:.4g})", c.x, c.y, c.z); };
+    std::string s;
+    if (m.type == MATERIAL_MIRROR) s = "mirror Ks " + rgb(m.ks);
+    if (m.type == MATERIAL_DIELECTRIC)
+        s = fmt::format("dielectric Ni {:.4g} Tf {}", m.ior, rgb(m.tf));
+    if (m.type == MATERIAL_PHONG) {
+        s = "phong Kd " + rgb(m.kd);
+        if (m.kd_texture != NO_TEXTURE)
+            s += fmt::format(" x texture '{}'", scene.textures[size_t(m.kd_texture)].name);
+        if (!is_black(m.ks)) s += fmt::format(" Ks {} Ns {:.4g}", rgb(m.ks), m.ns);
+    }
+    if (!is_black(m.ke)) s += " Ke " + rgb(m.ke);
+    return s;
+}
+
+// The scene's size, lights and features, its materials and what its file gave that is not
+// rendered (glTF).
 int scene_info(const std::string& path, bool json_out) {
     std::vector<std::string> warnings;
+    const auto t0 = std::chrono::steady_clock::now();
     const Scene scene = load_scene(path, warnings);
+    const double load_seconds =
+        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     for (const std::string& w : warnings) fmt::print(stderr, "twinpath: warning: {}\n", w);
     const FlatScene f = flatten(scene);
     const SceneFeatures features = analyze_features(f);
@@ -62,6 +86,16 @@ int scene_info(const std::string& path, bool json_out) {
     j["lights"] = f.lights.size();
     j["features"] = features.names();
     j["feature_mask"] = features.mask;
+    j["material_list"] = nlohmann::json::array();
+    for (size_t i = 0; i < scene.materials.size(); ++i) {
+        nlohmann::json m = {{"name", scene.material_names[i]},
+                            {"became", describe(scene.materials[i], scene)}};
+        m["dropped"] = i < scene.material_dropped.size() ? scene.material_dropped[i]
+                                                         : std::vector<std::string>{};
+        j["material_list"].push_back(m);
+    }
+    j["dropped"] = scene.dropped;
+    j["load_seconds"] = load_seconds; // reading the file into the scene model
     if (json_out) {
         fmt::print("{}\n", j.dump(2));
         return 0;
@@ -74,6 +108,13 @@ int scene_info(const std::string& path, bool json_out) {
     if (f.dielectric_interfaces > 0)
         fmt::print("  {} coincident dielectric faces merged into interfaces\n",
                    f.dielectric_interfaces);
+    fmt::print("  materials:\n");
+    for (const nlohmann::json& m : j["material_list"]) {
+        fmt::print("    {}: {}\n", m["name"].get<std::string>(), m["became"].get<std::string>());
+        for (const auto& d : m["dropped"])
+            fmt::print("      not rendered: {}\n", d.get<std::string>());
+    }
+    for (const std::string& d : scene.dropped) fmt::print("  not rendered: {}\n", d);
     return 0;
 }
 

@@ -33,11 +33,13 @@ void add_scene_options(CLI::App* c, SceneArgs& a) {
     c->add_option("--up", a.up, "Camera up vector X,Y,Z");
     c->add_option("--fov", a.fov, "Vertical field of view in degrees")
         ->check(number_in(1e-3, 179.0));
+    c->add_option("--camera", a.camera,
+                  "glTF: render the asset's camera N (default: the first its scene places)");
 }
 
 Scene load_scene_args(const SceneArgs& a, std::optional<uint32_t> spp) {
     std::vector<std::string> warnings;
-    Scene scene = load_scene(a.scene, warnings);
+    Scene scene = load_scene(a.scene, warnings, LoadOptions{a.camera});
     for (const std::string& w : warnings) fmt::print(stderr, "twinpath: warning: {}\n", w);
     SceneOverrides o;
     o.spp = a.spp ? a.spp : spp;

@@ -19,6 +19,7 @@ struct SceneArgs {
     std::string device, vk_mode = "auto";
     std::string eye, target, up;
     std::optional<float> fov;
+    std::optional<uint32_t> camera; // glTF: cameras[N]
 };
 
 void add_scene_options(CLI::App* c, SceneArgs& a);

@@ -1,9 +1,11 @@
 // Every kind of bad input of issue 2 through the real command line: one clear message that names
 // the file and the line or field, exit code 2, and no output file of any kind left behind.
+#include "support/gltf_builder.h"
 #include "support/test_paths.h"
 
 #include <catch2/catch.hpp>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <string>
@@ -59,6 +61,20 @@ const std::string kPngGarbage = "this is not a PNG file\n";
 // An OBJ with one triangle that uses the material 'a' of m.mtl.
 std::vector<std::pair<std::string, std::string>> with_mtl(const std::string& mtl) {
     return {{"m.mtl", mtl}, {"bad.obj", "mtllib m.mtl\n" + kTriangleObj + "usemtl a\nf 1 2 3\n"}};
+}
+
+// A valid glTF asset: the unit cube, emissive, under one node; `edit` changes its JSON or data.
+// Written as bad.gltf with its buffer in bad.bin.
+template <typename Edit>
+std::vector<std::pair<std::string, std::string>> gltf_with(Edit edit) {
+    tp::test::GltfBuilder g;
+    const tp::test::CubeData c = tp::test::unit_cube();
+    g.mesh({{"POSITION", g.vec3s(c.positions)}}, int(g.indices(c.indices)), 0);
+    g.add("materials", {{"emissiveFactor", {1, 1, 1}}});
+    g.add("nodes", {{"mesh", 0}});
+    g.scene({0});
+    edit(g);
+    return {{"bad.gltf", g.gltf_text("bad.bin")}, {"bad.bin", g.bin}};
 }
 
 void check_rejected(const BadInput& c) {
@@ -412,6 +428,179 @@ TEST_CASE("bad MTL files are rejected with file and line", "[cli][bad-input]") {
          "bad.obj",
          "",
          {"m.mtl:2", "'x'"}},
+    });
+}
+
+TEST_CASE("bad glTF files are rejected with file and field", "[cli][bad-input][gltf]") {
+    using json = nlohmann::json;
+    const auto textured = [](const std::string& uri) {
+        return [uri](tp::test::GltfBuilder& g) {
+            g.add("images", {{"uri", uri}});
+            g.add("textures", {{"source", 0}});
+            g.doc["materials"][0]["pbrMetallicRoughness"] = {{"baseColorTexture", {{"index", 0}}}};
+            g.doc["meshes"][0]["primitives"][0]["attributes"]["TEXCOORD_0"] =
+                g.vec2s(std::vector<glm::vec2>(24, glm::vec2(0.5f)));
+        };
+    };
+    auto with_two_scaled_nodes = [](tp::test::GltfBuilder& g) {
+        // 1e30 * 1e30 is beyond float: the world matrix of node 1 is out of range.
+        const json big = {1e30, 0, 0, 0, 0, 1e30, 0, 0, 0, 0, 1e30, 0, 0, 0, 0, 1};
+        g.doc["nodes"] = {{{"matrix", big}, {"children", {1}}}, {{"matrix", big}, {"mesh", 0}}};
+    };
+    std::string glb;
+    {
+        tp::test::GltfBuilder g;
+        const tp::test::CubeData c = tp::test::unit_cube();
+        g.mesh({{"POSITION", g.vec3s(c.positions)}}, int(g.indices(c.indices)));
+        g.add("nodes", {{"mesh", 0}});
+        g.scene({0});
+        glb = g.glb_bytes();
+    }
+    auto python_nan = gltf_with([](tp::test::GltfBuilder& g) {
+        g.doc["nodes"][0]["matrix"] = {1, 0, 0, 0, 0, 12345, 0, 0, 0, 0, 1, 0, 0, 0, 0, 1};
+    });
+    const size_t at = python_nan[0].second.find("12345");
+    python_nan[0].second.replace(at, 5, "NaN"); // as Python's json.dump writes it
+    check_all({
+        {"a buffer view past the end of its buffer",
+         gltf_with([](tp::test::GltfBuilder& g) { g.doc["bufferViews"][0]["byteLength"] = 4096; }),
+         "bad.gltf",
+         "",
+         {"bad.gltf", "bufferViews[0]", "runs past the end of buffers[0]"}},
+        {"an accessor past the end of its buffer view",
+         gltf_with([](tp::test::GltfBuilder& g) { g.doc["accessors"][0]["count"] = 1000; }),
+         "bad.gltf",
+         "",
+         {"bad.gltf", "accessors[0]", "bufferViews[0]"}},
+        {"an attribute naming an accessor that does not exist",
+         gltf_with([](tp::test::GltfBuilder& g) {
+             g.doc["meshes"][0]["primitives"][0]["attributes"]["POSITION"] = 99;
+         }),
+         "bad.gltf",
+         "",
+         {"bad.gltf", "meshes[0].primitives[0].attributes.POSITION", "accessors"}},
+        {"a vertex index out of range in the index data",
+         gltf_with([](tp::test::GltfBuilder& g) {
+             const uint32_t bad = 99;
+             const json& a =
+                 g.doc["accessors"][g.doc["meshes"][0]["primitives"][0]["indices"].get<size_t>()];
+             const json& v = g.doc["bufferViews"][a["bufferView"].get<size_t>()];
+             std::memcpy(&g.bin[v["byteOffset"].get<size_t>()], &bad, 4);
+         }),
+         "bad.gltf",
+         "",
+         {"bad.gltf", "meshes[0].primitives[0].indices", "99", "out of range"}},
+        {"a missing image",
+         gltf_with(textured("missing.png")),
+         "bad.gltf",
+         "",
+         {"bad.gltf", "images[0].uri", "missing.png", "does not exist"}},
+        {"an image that cannot be decoded",
+         [&] {
+             auto files = gltf_with(textured("garbage.png"));
+             files.push_back({"garbage.png", kPngGarbage});
+             return files;
+         }(),
+         "bad.gltf",
+         "",
+         {"bad.gltf", "images[0]", "baseColorTexture", "cannot decode"}},
+        {"a missing buffer file",
+         {gltf_with([](tp::test::GltfBuilder&) {})[0]},
+         "bad.gltf",
+         "",
+         {"bad.gltf", "buffers[0].uri", "bad.bin", "does not exist"}},
+        {"a buffer file shorter than its byteLength",
+         [&] {
+             auto files = gltf_with([](tp::test::GltfBuilder&) {});
+             files[1].second.resize(16);
+             return files;
+         }(),
+         "bad.gltf",
+         "",
+         {"bad.gltf", "buffers[0].byteLength"}},
+        {"an unsupported required extension",
+         gltf_with([](tp::test::GltfBuilder& g) {
+             g.doc["extensionsUsed"] = {"KHR_draco_mesh_compression"};
+             g.doc["extensionsRequired"] = {"KHR_draco_mesh_compression"};
+         }),
+         "bad.gltf",
+         "",
+         {"bad.gltf", "extensionsRequired[0]", "KHR_draco_mesh_compression", "not support"}},
+        {"a NaN in a matrix (Python's json.dump)",
+         python_nan,
+         "bad.gltf",
+         "",
+         {"bad.gltf", "nodes[0].matrix[5]", "malformed JSON"}},
+        {"a world matrix that overflows",
+         gltf_with(with_two_scaled_nodes),
+         "bad.gltf",
+         "",
+         {"bad.gltf", "nodes[1]", "not finite"}},
+        {"a rotation that is not a unit quaternion",
+         gltf_with([](tp::test::GltfBuilder& g) {
+             g.doc["nodes"][0]["rotation"] = {0, 0, 0, 0.5};
+         }),
+         "bad.gltf",
+         "",
+         {"bad.gltf", "nodes[0].rotation", "unit quaternion"}},
+        {"a property of the wrong type",
+         gltf_with([](tp::test::GltfBuilder& g) { g.doc["nodes"][0]["mesh"] = "0"; }),
+         "bad.gltf",
+         "",
+         {"bad.gltf", "nodes[0].mesh", "not an index into 'meshes'"}},
+        {"a cycle of children",
+         gltf_with([](tp::test::GltfBuilder& g) {
+             g.doc["nodes"][0]["children"] = {1};
+             g.add("nodes", {{"children", {0}}});
+         }),
+         "bad.gltf",
+         "",
+         {"bad.gltf", "nodes[0]", "cycle"}},
+        {"a spot light",
+         gltf_with([](tp::test::GltfBuilder& g) {
+             g.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
+                 {{"type", "spot"}, {"name", "desk lamp"}, {"spot", json::object()}}};
+             g.doc["nodes"][0]["extensions"]["KHR_lights_punctual"]["light"] = 0;
+         }),
+         "bad.gltf",
+         "",
+         {"bad.gltf", "KHR_lights_punctual.lights[0]", "desk lamp", "spot"}},
+        {"glTF 1.0",
+         gltf_with([](tp::test::GltfBuilder& g) { g.doc["asset"]["version"] = "1.0"; }),
+         "bad.gltf",
+         "",
+         {"bad.gltf", "asset.version"}},
+        {"a truncated GLB file",
+         {{"bad.glb", glb.substr(0, glb.size() - 8)}},
+         "bad.glb",
+         "",
+         {"bad.glb", "GLB", "length"}},
+        {"a GLB whose BIN chunk is shorter than buffer 0",
+         [&] {
+             std::string b = glb;
+             // The BIN chunk's length field: 8 bytes before its data, which ends the file.
+             const uint32_t json_len = uint32_t(uint8_t(b[12])) | uint32_t(uint8_t(b[13])) << 8;
+             const size_t bin_header = 20 + json_len;
+             const uint32_t shorter = 16;
+             std::memcpy(&b[bin_header], &shorter, 4);
+             b.resize(bin_header + 8 + shorter);
+             const uint32_t total = uint32_t(b.size());
+             std::memcpy(&b[8], &total, 4);
+             return std::vector<std::pair<std::string, std::string>>{{"bad.glb", b}};
+         }(),
+         "bad.glb",
+         "",
+         {"bad.glb", "buffers[0].byteLength"}},
+        {"--camera beyond the asset's cameras",
+         gltf_with([](tp::test::GltfBuilder&) {}),
+         "bad.gltf",
+         "--camera 3",
+         {"bad.gltf", "--camera 3", "0 camera(s)"}},
+        {"--camera on an OBJ file",
+         {{"bad.obj", kTriangleObj + "f 1 2 3\n"}},
+         "bad.obj",
+         "--camera 0",
+         {"bad.obj", "--camera"}},
     });
 }
 

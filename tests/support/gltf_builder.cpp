@@ -94,19 +94,19 @@ void GltfBuilder::scene(const std::vector<uint32_t>& roots) {
     doc["scene"] = 0;
 }
 
+std::string GltfBuilder::gltf_text(const std::string& bin_uri) const {
+    json d = doc;
+    if (!bin.empty()) d["buffers"] = json::array({{{"byteLength", bin.size()}, {"uri", bin_uri}}});
+    return d.dump(1) + "\n";
+}
+
 std::string GltfBuilder::write_gltf(const std::string& dir, const std::string& name,
                                     bool embed) const {
-    json d = doc;
-    if (!bin.empty()) {
-        std::string uri = name + ".bin";
-        if (embed)
-            uri = "data:application/octet-stream;base64," + base64(bin);
-        else
-            write_file(dir + "/" + uri, bin);
-        d["buffers"] = json::array({{{"byteLength", bin.size()}, {"uri", uri}}});
-    }
+    const std::string uri =
+        embed ? "data:application/octet-stream;base64," + base64(bin) : name + ".bin";
+    if (!embed && !bin.empty()) write_file(dir + "/" + uri, bin);
     const std::string path = dir + "/" + name + ".gltf";
-    write_file(path, d.dump(1) + "\n");
+    write_file(path, gltf_text(uri));
     return path;
 }
 

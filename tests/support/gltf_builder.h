@@ -38,6 +38,8 @@ class GltfBuilder {
     // The default scene with these root nodes.
     void scene(const std::vector<uint32_t>& roots);
 
+    // The .gltf text with buffer 0 at `bin_uri` (the caller writes the file there).
+    std::string gltf_text(const std::string& bin_uri) const;
     // dir/name.gltf with the buffer in dir/name.bin, or embedded as a data: URI.
     std::string write_gltf(const std::string& dir, const std::string& name,
                            bool embed = false) const;
