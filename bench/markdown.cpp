@@ -1,4 +1,5 @@
 #include "bench/markdown.h"
+#include "bench/sizes.h"
 #include "bench/specialization.h"
 
 #include "bench/result_json.h"
@@ -266,6 +267,7 @@ std::string markdown_section(const json& r, const std::string& base) {
     if (has_section(r, "table")) md += table_section(r);
     if (has_section(r, "peer")) md += peer_section(r);
     if (has_section(r, "specialization")) md += specialization_section(r);
+    if (has_section(r, "sizes")) md += sizes_section(r, base);
     if (!r["skipped"].empty()) {
         md += "Skipped:\n\n";
         for (const json& s : r["skipped"])

@@ -22,6 +22,13 @@ struct BenchOptions {
     bool specialization = false; // scene-specialized vs all-features time per spp (issue 9)
     uint32_t spec_spp = 16, spec_rounds = 3; // specialization: spp per render, rounds per variant
     bool pipeline_stats = false; // specialization: the Vulkan driver's pipeline statistics
+    bool sizes = false;          // rays/s against image size (issue 34, bench/sizes.h)
+    // Sizes: WxH (or N for NxN) in any order; each point renders at least sizes_time_s seconds,
+    // best of sizes_rounds.
+    std::vector<std::string> sizes_list{"64x64",     "128x128",   "256x256",  "512x512",
+                                        "1024x1024", "1920x1080", "3840x2160"};
+    double sizes_time_s = 0.5;
+    uint32_t sizes_rounds = 2;
 
     std::vector<std::string> scenes;             // catalogue names (scenes.h) or .json/.obj files
     std::vector<std::string> backends;           // cpu, vulkan (every mode), vulkan:compute, ...

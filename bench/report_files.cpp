@@ -1,6 +1,7 @@
 #include "bench/report_files.h"
 
 #include "bench/result_json.h"
+#include "bench/sizes.h"
 #include "bench/svg_plot.h"
 #include "util/output_file.h"
 
@@ -86,6 +87,26 @@ std::string peer_csv(const json& result) {
     return csv;
 }
 
+std::string sizes_csv(const json& result) {
+    std::string csv = "scene,backend,mode,device,timer,width,height,pixels,spp,wall_s,gpu_s,"
+                      "camera_rays,extension_rays,shadow_rays,mrays_s,ratio_to_base,base\n";
+    std::vector<std::string> words;
+    for (const json& w : result["settings"]["sizes"]["list"]) words.push_back(w);
+    const ImageSize base = ratio_base(parse_image_sizes(words));
+    for (const json& sc : result["scenes"])
+        for (const json& run : sc.value("sizes", json::array())) {
+            const std::vector<json> ratios = rate_ratios(run, base);
+            for (size_t i = 0; i < run["points"].size(); ++i) {
+                const json& p = run["points"][i];
+                csv += row({sc["name"], run["backend"], run["mode"], run["device"], run["timer"],
+                            p["width"], p["height"], p["pixels"], p["spp"], p["wall_s"], p["gpu_s"],
+                            p["rays"]["camera"], p["rays"]["extension"], p["rays"]["shadow"],
+                            p["mrays_s"], ratios[i], base.name()});
+            }
+        }
+    return csv;
+}
+
 } // namespace
 
 void write_csv_files(const json& result, const std::string& dir) {
@@ -95,12 +116,20 @@ void write_csv_files(const json& result, const std::string& dir) {
         write_output_file((fs::path(dir) / "table.csv").string(), table_csv(result));
     if (has_section(result, "peer"))
         write_output_file((fs::path(dir) / "peer.csv").string(), peer_csv(result));
+    if (has_section(result, "sizes"))
+        write_output_file((fs::path(dir) / "sizes.csv").string(), sizes_csv(result));
 }
 
 void write_plots(json& result, const std::string& dir) {
     for (json& sc : result["scenes"]) {
+        if (sc.contains("sizes") && !sc["sizes"].empty()) {
+            const std::string rel = "plots/sizes/" + sc["name"].get<std::string>() + ".svg";
+            fs::create_directories(fs::path(dir) / "plots" / "sizes");
+            write_output_file((fs::path(dir) / rel).string(), svg_line_plot(sizes_plot(sc)));
+            sc["sizes_plot"] = rel;
+        }
         if (!sc.contains("ladder") || sc["ladder"].empty()) continue;
-        LogLogPlot plot;
+        LinePlot plot;
         plot.title = fmt::format("{}: relMSE against time ({}x{})", sc["name"].get<std::string>(),
                                  sc["width"].get<int>(), sc["height"].get<int>());
         plot.x_label = "wall time [s]";
@@ -115,7 +144,7 @@ void write_plots(json& result, const std::string& dir) {
         }
         const std::string rel = "plots/" + sc["name"].get<std::string>() + ".svg";
         fs::create_directories(fs::path(dir) / "plots");
-        write_output_file((fs::path(dir) / rel).string(), svg_loglog(plot));
+        write_output_file((fs::path(dir) / rel).string(), svg_line_plot(plot));
         sc["plot"] = rel;
     }
 }

@@ -8,12 +8,13 @@
 
 namespace tp::bench {
 
-// ladder.csv, table.csv and peer.csv in `dir`, for the sections the result has.
+// ladder.csv, table.csv, peer.csv and sizes.csv in `dir`, for the sections the result has.
 void write_csv_files(const nlohmann::json& result, const std::string& dir);
 
 // plots/<scene>.svg in `dir`: relMSE (excess over the reference noise) against wall time,
 // log-log, one line per backend and mode, guides at 1e-2 and 1e-3. Records each plot's path,
-// relative to `dir`, as scenes[i].plot.
+// relative to `dir`, as scenes[i].plot. And plots/sizes/<scene>.svg: Mrays/s against image size
+// (bench/sizes.h), recorded as scenes[i].sizes_plot.
 void write_plots(nlohmann::json& result, const std::string& dir);
 
 } // namespace tp::bench

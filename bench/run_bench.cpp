@@ -3,7 +3,8 @@
 //   --ladder  error against time: relMSE/MAPE against a cached CPU reference at 1, 2, 4, ...
 //             spp, efficiency, rays/s by kind, time to reach relMSE 1e-2 and 1e-3 (default);
 //   --table   rays/s and time over depth and spp (the seed thesis's Table 5.3);
-//   --peer    time per spp next to Embree's path tracer tutorial, at 1 and 2 threads (issue 2).
+//   --peer    time per spp next to Embree's path tracer tutorial, at 1 and 2 threads (issue 2);
+//   --sizes   rays/s against image size (issue 34).
 // Everything measured goes into one JSON result (bench.json); the CSV files, the SVG plots
 // and the markdown section are generated from it, so a result brought back from another
 // machine renders the same way (--from-json). A new section is a flag, a function that fills
@@ -20,6 +21,7 @@
 #include "bench/report_files.h"
 #include "bench/scene_hash.h"
 #include "bench/scenes.h"
+#include "bench/sizes.h"
 #include "bench/specialization.h"
 #include "bench/sweep.h"
 #include "scene/flatten.h"
@@ -32,6 +34,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fstream>
 
@@ -78,6 +81,9 @@ void validate(const BenchOptions& o) {
         input_error("--pipeline-stats goes with --specialization (the statistics of both "
                     "variants' pipelines)");
     if (o.scenes.empty()) input_error("--scenes must not be empty");
+    parse_image_sizes(o.sizes_list);
+    if (!(o.sizes_time_s > 0) || !std::isfinite(o.sizes_time_s))
+        input_error("--sizes-time must be a positive number of seconds, got {}", o.sizes_time_s);
 }
 
 json lights_json(const FlatScene& f) {
@@ -170,6 +176,35 @@ void specialization(BenchRun& run, const std::string& name, const FlatScene& fla
     }
 }
 
+// --sizes (bench/sizes.h): rays/s against image size; the scene is flattened at each size once.
+void sizes(BenchRun& run, const std::string& name, const Scene& scene, json& sj) {
+    const std::vector<ImageSize> list = parse_image_sizes(run.o.sizes_list);
+    std::vector<FlatScene> flats;
+    for (const ImageSize& size : list) {
+        BenchOptions at = run.o;
+        at.width = size.width;
+        at.height = size.height;
+        flats.push_back(flatten_for_bench(scene, at));
+        flats.back().name = name;
+    }
+    sj["sizes"] = json::array();
+    for (const Backend& b : run.backends) {
+        const std::string what = fmt::format("{} {} sizes", name, b.label());
+        guarded(run, what, [&] {
+            ProgressBar bar(run.next_label(what));
+            const json row = run_sizes(flats, list, b, run.o, bar.callback());
+            sj["sizes"].push_back(row);
+            std::string rates;
+            for (const json& p : row["points"])
+                rates += fmt::format(" {}x{}: {}", p["width"].get<int>(), p["height"].get<int>(),
+                                     p["mrays_s"].is_number()
+                                         ? fmt::format("{:.4g}", p["mrays_s"].get<double>())
+                                         : std::string("none"));
+            fmt::print("bench: {}: Mrays/s{}\n", what, rates);
+        });
+    }
+}
+
 void peer(BenchRun& run, const std::string& name, Scene scene, json& sj) {
     const std::string what = fmt::format("{} peer", name);
     std::string reason;
@@ -200,7 +235,8 @@ json result_header(const BenchRun& run) {
     for (const auto& [on, name] : {std::pair{o.ladder, "ladder"},
                                    {o.table, "table"},
                                    {o.peer, "peer"},
-                                   {o.specialization, "specialization"}})
+                                   {o.specialization, "specialization"},
+                                   {o.sizes, "sizes"}})
         if (on) {
             sections.push_back(name);
             names += (names.empty() ? "" : ", ") + std::string(name);
@@ -211,6 +247,8 @@ json result_header(const BenchRun& run) {
         backends.push_back({{"backend", b.name}, {"mode", b.mode}, {"device", b.device}});
         labels += (labels.empty() ? "" : ", ") + b.label();
     }
+    json size_list = json::array();
+    for (const ImageSize& s : parse_image_sizes(o.sizes_list)) size_list.push_back(s.name());
     json r;
     r["schema"] = "twinpath-bench/1";
     r["section"] = o.section;
@@ -240,6 +278,7 @@ json result_header(const BenchRun& run) {
         {"spec_spp", o.spec_spp},
         {"spec_rounds", o.spec_rounds},
         {"pipeline_stats", o.pipeline_stats},
+        {"sizes", {{"list", size_list}, {"time_s", o.sizes_time_s}, {"rounds", o.sizes_rounds}}},
         {"peer", {{"spp", o.peer_spp}, {"threads", o.peer_threads}, {"binary", o.peer_binary}}},
         {"assets", run.assets_dir},
         {"cache", run.cache_dir}};
@@ -274,13 +313,13 @@ int run_bench(const BenchOptions& options) {
     BenchRun run;
     run.o = options;
     BenchOptions& o = run.o;
-    if (!o.ladder && !o.table && !o.peer && !o.specialization) o.ladder = true;
+    if (!o.ladder && !o.table && !o.peer && !o.specialization && !o.sizes) o.ladder = true;
     validate(o);
     std::sort(o.table_spp.begin(), o.table_spp.end());
     o.table_spp.erase(std::unique(o.table_spp.begin(), o.table_spp.end()), o.table_spp.end());
     run.cache_dir = resolve_cache_dir(o.cache_dir);
     run.assets_dir = resolve_assets_dir(o.assets_dir);
-    if (o.ladder || o.table || o.specialization) {
+    if (o.ladder || o.table || o.specialization || o.sizes) {
         std::vector<Skip> unavailable;
         run.backends = expand_backends(o.backends, o.device, o.threads, unavailable);
         for (const Skip& s : unavailable) skip(run, s.what, s.reason);
@@ -302,7 +341,8 @@ int run_bench(const BenchOptions& options) {
     if (scenes.empty()) input_error("bench: none of the scenes could be loaded (above)");
     const int per_scene = (o.ladder ? 1 + int(run.backends.size() * o.samplers.size()) : 0) +
                           (o.table ? int(run.backends.size()) : 0) + (o.peer ? 1 : 0) +
-                          (o.specialization ? int(run.backends.size()) : 0);
+                          (o.specialization ? int(run.backends.size()) : 0) +
+                          (o.sizes ? int(run.backends.size()) : 0);
     run.steps = per_scene * int(scenes.size());
 
     r["scenes"] = json::array();
@@ -322,6 +362,7 @@ int run_bench(const BenchOptions& options) {
         if (o.table) table(run, name, flat, sj);
         if (o.peer) peer(run, name, scene, sj);
         if (o.specialization) specialization(run, name, flat, sj);
+        if (o.sizes) sizes(run, name, scene, sj);
         r["scenes"].push_back(sj);
     }
 

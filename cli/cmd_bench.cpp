@@ -30,6 +30,9 @@ void apply_quick(BenchOptions& o, const CLI::App& c) {
     if (unset("--table-fixed-spp")) o.table_fixed_spp = 2;
     if (unset("--table-fixed-depth")) o.table_fixed_depth = 2;
     if (unset("--peer-spp")) o.peer_spp = 2;
+    if (unset("--sizes-list")) o.sizes_list = {"8x8", "16x16"};
+    if (unset("--sizes-time")) o.sizes_time_s = 0.02;
+    if (unset("--sizes-rounds")) o.sizes_rounds = 1;
 }
 
 } // namespace
@@ -56,6 +59,20 @@ Subcommand add_bench_command(CLI::App& app) {
     c->add_flag("--pipeline-stats", o.pipeline_stats,
                 "Specialization: the Vulkan driver's statistics of both variants' pipelines "
                 "(register counts, ...; docs/gpu.md)");
+    c->add_flag("--sizes", o.sizes,
+                "Rays/s against image size, per backend/mode (table and plot; docs/bench.md)");
+    c->add_option("--sizes-list", o.sizes_list,
+                  "Sizes: image sizes WxH (or N for NxN); rates are also given over 1920x1080's "
+                  "(else the largest's)")
+        ->delimiter(',')
+        ->capture_default_str();
+    c->add_option("--sizes-time", o.sizes_time_s,
+                  "Sizes: each point renders at least this many seconds (whole passes)")
+        ->check(CLI::Range(1e-3, 3600.0))
+        ->capture_default_str();
+    c->add_option("--sizes-rounds", o.sizes_rounds, "Sizes: best of this many rounds")
+        ->check(CLI::Range(1u, 100u))
+        ->capture_default_str();
     c->add_option("--scenes", o.scenes,
                   "Scenes: " + catalogue_names() + ", or .json/.obj/.gltf/.glb files")
         ->delimiter(',')

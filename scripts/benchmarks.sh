@@ -7,7 +7,9 @@
 #      local-ladder  error against time, CPU (Embree) and Vulkan (every mode of the device:
 #                    compute on Mesa lavapipe on a machine without a GPU);
 #      local-table   rays/s and time over depth and spp (thesis Table 5.3), CPU;
-#      local-peer    time per spp next to Embree's path tracer tutorial (/usr/bin/pathtracer).
+#      local-peer    time per spp next to Embree's path tracer tutorial (/usr/bin/pathtracer);
+#      local-sizes   rays/s against image size, CPU and Vulkan, up to 512x512 (lavapipe takes
+#                    seconds per pass beyond; the GPU machine measures up to 3840x2160).
 # 2. The sections of results brought back from other machines (the GPU rows): each argument is
 #    a bench.json; it is copied to $BENCH_RESULTS/<its section id>/bench.json, its CSV and plots
 #    are rendered there again, and its section is merged.
@@ -55,6 +57,9 @@ if ((local_sections)); then
   local_section local-ladder --ladder --backends cpu,vulkan
   local_section local-table --table --backends cpu
   local_section local-peer --peer --scenes cornell,bunny --width 512 --height 512
+  sizes=(--sizes-list 32,64,128,256,512)
+  ((${#quick[@]})) && sizes=() # --quick's own smoke sizes
+  local_section local-sizes --sizes --scenes cornell,bunny --backends cpu,vulkan "${sizes[@]}"
 fi
 
 for json in "${gpu_results[@]}"; do
