@@ -10,6 +10,7 @@
 #pragma once
 
 #include "cpu_ref/embree_accel.h"
+#include "cpu_ref/rng_lanes.h"
 #include "render/stats.h"
 #include "scene/flatten.h"
 #include "shared/camera.h"
@@ -106,6 +107,22 @@ class CpuEngine {
         log_->push_back(v);
     }
 
+    // rng.h's pair draws of a bounce, under the names the path loop calls: as members they hide
+    // the namespace's functions inside the shared bodies. The first draw of a bounce computes
+    // all of its pairs in lanes (rng_lanes.h), the others read them; the words are rng.h's.
+    uvec2 rng_bounce2_bits(const RngKey& key, uint32_t bounce, uint32_t k) {
+        if (bounce != words_bounce_) {
+            bounce_words(key, bounce, words_);
+            words_bounce_ = bounce;
+        }
+        const uint32_t lane = bounce_pair_lane(k);
+        return uvec2(words_.first[lane], words_.second[lane]);
+    }
+    vec2 rng_bounce2(const RngKey& key, uint32_t bounce, uint32_t k) {
+        const uvec2 w = rng_bounce2_bits(key, bounce, k);
+        return vec2(uint_to_unit_float(w.x), uint_to_unit_float(w.y));
+    }
+
     // ---- the shared bodies ---------------------------------------------------------------
 #include "shared/debug_views.h"
 #include "shared/integrator.h"
@@ -115,6 +132,8 @@ class CpuEngine {
     const CpuSceneState& state_;
     const EmbreeAccel& accel_;
     std::vector<PathVertex>* log_;
+    BounceWords words_;                    // the pairs of bounce words_bounce_ (one path's key)
+    uint32_t words_bounce_ = ~uint32_t(0); // none yet
 };
 
 } // namespace tp

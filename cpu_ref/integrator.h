@@ -15,10 +15,12 @@
 // The path loop is compiled twice, for baseline x86-64 and for x86-64-v3 (AVX2, FMA, BMI2), and
 // the dynamic loader picks the second where the CPU has it (GCC's function multiversioning, an
 // ifunc): the reference still runs on any x86-64 and is faster where it can (BENCHMARKS.md).
-// integrator.cpp is compiled with -ffp-contract=off (cpu_ref/CMakeLists.txt): neither copy
-// fuses a multiply-add, so both give bit-identical images.
+// `flatten` inlines the whole loop (path_radiance and what it calls) into each copy: without it
+// GCC keeps path_radiance out of line, compiled once for baseline x86-64, and the x86-64-v3 copy
+// is only a wrapper around it. integrator.cpp is compiled with -ffp-contract=off
+// (cpu_ref/CMakeLists.txt): neither copy fuses a multiply-add, so both give bit-identical images.
 #if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define TP_PATH_LOOP_CLONES __attribute__((target_clones("default", "arch=x86-64-v3")))
+#define TP_PATH_LOOP_CLONES __attribute__((flatten, target_clones("default", "arch=x86-64-v3")))
 #else
 #define TP_PATH_LOOP_CLONES
 #endif
