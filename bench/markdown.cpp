@@ -1,4 +1,5 @@
 #include "bench/markdown.h"
+#include "bench/peer_efficiency.h"
 #include "bench/sizes.h"
 #include "bench/specialization.h"
 
@@ -265,7 +266,7 @@ std::string markdown_section(const json& r, const std::string& base) {
     md += facts(r);
     if (has_section(r, "ladder")) md += ladder_section(r, base);
     if (has_section(r, "table")) md += table_section(r);
-    if (has_section(r, "peer")) md += peer_section(r);
+    if (has_section(r, "peer")) md += peer_section(r) + efficiency_markdown(r);
     if (has_section(r, "specialization")) md += specialization_section(r);
     if (has_section(r, "sizes")) md += sizes_section(r, base);
     if (!r["skipped"].empty()) {

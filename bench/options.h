@@ -16,9 +16,9 @@ constexpr uint32_t kReferenceSeed = 0x7e5f0001u;
 
 struct BenchOptions {
     // Sections; when none is chosen the ladder runs.
-    bool ladder = false;         // error against time for each backend and mode (issue 5)
-    bool table = false;          // rays/s and time over depth and spp (thesis Table 5.3)
-    bool peer = false;           // the same scenes in Embree's path tracer tutorial (issue 2)
+    bool ladder = false; // error against time for each backend and mode (issue 5)
+    bool table = false;  // rays/s and time over depth and spp (thesis Table 5.3)
+    bool peer = false; // the same scenes in Embree's path tracer tutorial (issue 2) and Cycles (36)
     bool specialization = false; // scene-specialized vs all-features time per spp (issue 9)
     uint32_t spec_spp = 16, spec_rounds = 3; // specialization: spp per render, rounds per variant
     bool pipeline_stats = false; // specialization: the Vulkan driver's pipeline statistics
@@ -53,6 +53,10 @@ struct BenchOptions {
     uint32_t peer_spp = 16;
     std::vector<uint32_t> peer_threads{1, 2};
     std::string peer_binary = "/usr/bin/pathtracer";
+    // Efficiency next to a production renderer (bench/peer_efficiency.h), at each peer_threads:
+    // seconds of sampling time per renderer, and Blender (Cycles).
+    double peer_budget_s = 10;
+    std::string blender = "/usr/bin/blender";
 
     std::string out_dir = "out/bench";
     std::string cache_dir;  // empty: $TWINPATH_CACHE, $XDG_CACHE_HOME/twinpath, ~/.cache/twinpath

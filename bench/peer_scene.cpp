@@ -98,19 +98,28 @@ void write_obj(const FlatScene& s, const std::string& obj_path) {
     std::ofstream obj(obj_path);
     obj << "# twinpath bench: world-space triangles of " << s.name << "\n";
     obj << "mtllib " << mtl_path.filename().string() << "\n";
-    uint64_t base = 1; // OBJ indices are 1-based and global
+    // OBJ indices are 1-based and count each kind of line (v, vt, vn) over the whole file; a
+    // mesh without normals or uvs writes none of them.
+    struct {
+        uint64_t v = 1, vt = 1, vn = 1;
+    } base;
     for (size_t i = 0; i < s.instances.size(); ++i) {
         const Instance& inst = s.instances[i];
         const MeshInfo& mesh = s.meshes[inst.mesh];
         const vec4 w[3] = {inst.to_world0, inst.to_world1, inst.to_world2};
         const vec4 o[3] = {inst.to_object0, inst.to_object1, inst.to_object2};
         const bool normals = (mesh.flags & MESH_HAS_NORMALS) != 0u;
+        const bool uvs = (mesh.flags & MESH_HAS_UVS) != 0u;
         for (uint32_t v = 0; v < mesh.vertex_count; ++v) {
             const vec3 p = s.positions[mesh.first_vertex + v];
             obj << "v "
                 << triple(vec3(dot(vec3(w[0]), p) + w[0].w, dot(vec3(w[1]), p) + w[1].w,
                                dot(vec3(w[2]), p) + w[2].w))
                 << "\n";
+            if (uvs) {
+                const vec2 uv = s.uvs[mesh.first_vertex + v];
+                obj << fmt::format("vt {} {}\n", uv.x, uv.y);
+            }
             if (!normals) continue;
             // Normals map to world by the inverse transpose: n_j = sum_k to_object[k][j] n_k.
             const vec3 n = s.normals[mesh.first_vertex + v];
@@ -121,13 +130,18 @@ void write_obj(const FlatScene& s, const std::string& obj_path) {
         obj << "usemtl m" << inst.material << "\n";
         for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
             const uvec3 tri = s.triangles[mesh.first_triangle + t];
-            if (normals)
-                obj << fmt::format("f {0}//{0} {1}//{1} {2}//{2}\n", base + tri.x, base + tri.y,
-                                   base + tri.z);
-            else
-                obj << fmt::format("f {} {} {}\n", base + tri.x, base + tri.y, base + tri.z);
+            obj << "f";
+            for (const uint32_t k : {tri.x, tri.y, tri.z}) {
+                obj << " " << base.v + k;
+                if (uvs || normals) obj << "/";
+                if (uvs) obj << base.vt + k;
+                if (normals) obj << "/" << base.vn + k;
+            }
+            obj << "\n";
         }
-        base += mesh.vertex_count;
+        base.v += mesh.vertex_count;
+        if (uvs) base.vt += mesh.vertex_count;
+        if (normals) base.vn += mesh.vertex_count;
     }
     if (!obj || !mtl) runtime_error("cannot write {}", obj_path);
 }

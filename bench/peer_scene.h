@@ -23,7 +23,8 @@ namespace tp::bench {
 std::vector<std::string> make_peer_variant(Scene& scene, std::string& reason);
 
 // Writes the flattened scene's world-space triangles (instances expanded) to `obj_path` and
-// its materials to an MTL file beside it (Kd, Ks, Ns). Like everything flatten() places, they
+// its materials to an MTL file beside it (Kd, Ks, Ns, named m<index>), with the meshes' normals and
+// uvs where they have them. Like everything flatten() places, they
 // are camera-relative (FlatScene::origin), as are the camera and lights that
 // peer_scene_arguments() gives the tutorial, so both renderers see the same scene.
 void write_obj(const FlatScene& scene, const std::string& obj_path);

@@ -3,7 +3,8 @@
 //   --ladder  error against time: relMSE/MAPE against a cached CPU reference at 1, 2, 4, ...
 //             spp, efficiency, rays/s by kind, time to reach relMSE 1e-2 and 1e-3 (default);
 //   --table   rays/s and time over depth and spp (the seed thesis's Table 5.3);
-//   --peer    time per spp next to Embree's path tracer tutorial, at 1 and 2 threads (issue 2);
+//   --peer    time per spp next to Embree's path tracer tutorial, at 1 and 2 threads (issue 2), and
+//             time to error next to Cycles (issue 36);
 //   --sizes   rays/s against image size (issue 34).
 // Everything measured goes into one JSON result (bench.json); the CSV files, the SVG plots
 // and the markdown section are generated from it, so a result brought back from another
@@ -16,6 +17,7 @@
 #include "bench/ladder.h"
 #include "bench/markdown.h"
 #include "bench/peer.h"
+#include "bench/peer_efficiency.h"
 #include "bench/peer_scene.h"
 #include "bench/reference.h"
 #include "bench/report_files.h"
@@ -205,7 +207,16 @@ void sizes(BenchRun& run, const std::string& name, const Scene& scene, json& sj)
     }
 }
 
-void peer(BenchRun& run, const std::string& name, Scene scene, json& sj) {
+// --peer: time per spp next to Embree's tutorial (bench/peer.h) on the scene's peer variant, and
+// time to error next to Cycles on the scene itself (bench/peer_efficiency.h).
+void peer(BenchRun& run, const std::string& name, Scene scene, const FlatScene& flat, json& sj) {
+    const std::string eff = fmt::format("{} time to error", name);
+    guarded(run, eff, [&] {
+        ProgressBar bar(run.next_label(eff));
+        sj["efficiency"] = run_efficiency(flat, name, run.o, run.cache_dir, bar.callback());
+        for (const json& s : sj["efficiency"]["skipped"]) skip(run, eff, s.get<std::string>());
+        fmt::print("bench: {}: done\n", eff);
+    });
     const std::string what = fmt::format("{} peer", name);
     std::string reason;
     const std::vector<std::string> changes = make_peer_variant(scene, reason);
@@ -218,11 +229,11 @@ void peer(BenchRun& run, const std::string& name, Scene scene, json& sj) {
         skip(run, what, reason);
         return;
     }
-    FlatScene flat = flatten_for_bench(std::move(scene), run.o);
-    flat.params.min_depth = flat.params.max_depth; // Russian roulette off (peer.h)
-    flat.name = name;
-    const PeerRun pr =
-        run_peer(flat, run.o, (fs::path(run.cache_dir) / "peer" / name).string(), bar.callback());
+    FlatScene variant = flatten_for_bench(std::move(scene), run.o);
+    variant.params.min_depth = variant.params.max_depth; // Russian roulette off (peer.h)
+    variant.name = name;
+    const PeerRun pr = run_peer(variant, run.o, (fs::path(run.cache_dir) / "peer" / name).string(),
+                                bar.callback());
     sj["peer"] = peer_json(pr);
     sj["peer_variant"] = changes;
     fmt::print("bench: {}: done\n", what);
@@ -279,7 +290,13 @@ json result_header(const BenchRun& run) {
         {"spec_rounds", o.spec_rounds},
         {"pipeline_stats", o.pipeline_stats},
         {"sizes", {{"list", size_list}, {"time_s", o.sizes_time_s}, {"rounds", o.sizes_rounds}}},
-        {"peer", {{"spp", o.peer_spp}, {"threads", o.peer_threads}, {"binary", o.peer_binary}}},
+        {"peer",
+         {{"spp", o.peer_spp},
+          {"threads", o.peer_threads},
+          {"binary", o.peer_binary},
+          {"budget_s", o.peer_budget_s},
+          {"blender", o.blender},
+          {"samplers", o.samplers}}},
         {"assets", run.assets_dir},
         {"cache", run.cache_dir}};
     return r;
@@ -340,7 +357,7 @@ int run_bench(const BenchOptions& options) {
     }
     if (scenes.empty()) input_error("bench: none of the scenes could be loaded (above)");
     const int per_scene = (o.ladder ? 1 + int(run.backends.size() * o.samplers.size()) : 0) +
-                          (o.table ? int(run.backends.size()) : 0) + (o.peer ? 1 : 0) +
+                          (o.table ? int(run.backends.size()) : 0) + (o.peer ? 2 : 0) +
                           (o.specialization ? int(run.backends.size()) : 0) +
                           (o.sizes ? int(run.backends.size()) : 0);
     run.steps = per_scene * int(scenes.size());
@@ -360,7 +377,7 @@ int run_bench(const BenchOptions& options) {
                    {"lights", lights_json(flat)}};
         if (o.ladder) ladder(run, name, flat, sj);
         if (o.table) table(run, name, flat, sj);
-        if (o.peer) peer(run, name, scene, sj);
+        if (o.peer) peer(run, name, scene, flat, sj);
         if (o.specialization) specialization(run, name, flat, sj);
         if (o.sizes) sizes(run, name, scene, sj);
         r["scenes"].push_back(sj);

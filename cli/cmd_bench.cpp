@@ -33,6 +33,7 @@ void apply_quick(BenchOptions& o, const CLI::App& c) {
     if (unset("--sizes-list")) o.sizes_list = {"8x8", "16x16"};
     if (unset("--sizes-time")) o.sizes_time_s = 0.02;
     if (unset("--sizes-rounds")) o.sizes_rounds = 1;
+    if (unset("--peer-budget")) o.peer_budget_s = 0.2;
 }
 
 } // namespace
@@ -47,7 +48,8 @@ Subcommand add_bench_command(CLI::App& app) {
     CLI::App* c = app.add_subcommand("bench", "Benchmark run time against error (BENCHMARKS.md)");
     c->add_flag("--ladder", o.ladder, "Error against time for each backend/mode (the default)");
     c->add_flag("--table", o.table, "Rays/s and time over depth and spp (thesis Table 5.3)");
-    c->add_flag("--peer", o.peer, "Time per spp next to Embree's path tracer tutorial");
+    c->add_flag("--peer", o.peer,
+                "Time per spp next to Embree's path tracer tutorial; time to error next to Cycles");
     c->add_flag("--specialization", o.specialization,
                 "Time per spp: scene-specialized path loop against --features all");
     c->add_option("--spec-spp", o.spec_spp, "Specialization: spp of each timed render")
@@ -126,6 +128,12 @@ Subcommand add_bench_command(CLI::App& app) {
         ->check(CLI::Range(1u, 4096u))
         ->capture_default_str();
     c->add_option("--peer-binary", o.peer_binary, "Embree's path tracer tutorial")
+        ->capture_default_str();
+    c->add_option("--peer-budget", o.peer_budget_s,
+                  "Peer: seconds of sampling per renderer in the time-to-error table")
+        ->check(CLI::Range(0.01, 1e6))
+        ->capture_default_str();
+    c->add_option("--blender", o.blender, "Peer: Blender, whose Cycles renders the scenes too")
         ->capture_default_str();
     c->add_option("--out", o.out_dir, "Output directory")->capture_default_str();
     c->add_option("--cache", o.cache_dir,

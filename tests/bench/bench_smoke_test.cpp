@@ -2,6 +2,7 @@
 // and writes well-formed files, the reference cache is reused and keyed by the scene, missing
 // assets and bad options say so clearly. Never a timing: only that times are there.
 #include "bench_files.h"
+#include "compare/rgb_image.h"
 #include "support/test_paths.h"
 
 #include <catch2/catch.hpp>
@@ -167,6 +168,57 @@ void check_peer_files(const std::string& out, const json& r, const tp::test::Pro
     }
 }
 
+const std::string kBlender = "/usr/bin/blender"; // Cycles' host (Debian package blender)
+
+// Mean of channel c over the left or right half of an image.
+double half_mean(const tp::RgbImage& img, int c, bool right) {
+    double sum = 0;
+    const int x0 = right ? img.width / 2 : 0, x1 = right ? img.width : img.width / 2;
+    for (int y = 0; y < img.height; ++y)
+        for (int x = x0; x < x1; ++x) sum += img.mean[c][size_t(y) * img.width + x];
+    return sum / (double(img.height) * (x1 - x0));
+}
+
+void check_efficiency(const std::string& out, const json& r) {
+    const json& e = r["scenes"][0]["efficiency"];
+    CHECK(
+        contains(read_file(out + "/bench.md"), "### Time to error against a production renderer"));
+    size_t ours = 0, peers = 0;
+    for (const json& row : e["rows"]) {
+        INFO(row.dump());
+        CHECK(row["exit_code"] == 0);
+        CHECK(row["spp"].get<int>() >= 2);
+        CHECK(row["relmse"].is_number()); // measured, whatever its value
+        ++(row.value("peer", false) ? peers : ours);
+    }
+    CHECK(ours == 2); // threads 1 and 2, the random sampler
+    if (!fs::exists(kBlender)) {
+        WARN("no " << kBlender << ": checking the 'peer absent' report instead");
+        CHECK(peers == 0);
+        CHECK(contains(e["skipped"][0].get<std::string>(), "Blender is not at"));
+        return;
+    }
+    CHECK(peers == 2);
+    // The export (peer_cycles.cpp, cycles_scene.py) gives Cycles the same scene: the two
+    // references agree in the red of the box's left half (the red wall) and the green of its
+    // right half (the green wall), which a mirrored camera, a missing emitter or a light off by a
+    // factor of pi would break. Each mean is over 288 pixels of 32 spp (Cycles: 2 x 16), whose
+    // noise is a few per cent; the materials are Lambertian in both, so 10 % is noise alone.
+    const json& refs = e["references"];
+    const tp::RgbImage ours_ref = tp::load_rgb_image(refs["twinpath"]["files"][0]);
+    tp::RgbImage peer_ref = tp::load_rgb_image(refs["peer"]["files"][0]);
+    const tp::RgbImage other = tp::load_rgb_image(refs["peer"]["files"][1]);
+    for (int c = 0; c < 3; ++c)
+        for (size_t i = 0; i < peer_ref.pixels(); ++i)
+            peer_ref.mean[c][i] = 0.5 * (peer_ref.mean[c][i] + other.mean[c][i]);
+    for (const auto& [c, right] : {std::pair{0, false}, std::pair{1, true}}) {
+        const double a = half_mean(ours_ref, c, right), b = half_mean(peer_ref, c, right);
+        INFO("channel " << c << (right ? ", right half" : ", left half") << ": twinpath " << a
+                        << ", Cycles " << b);
+        CHECK(std::abs(a - b) <= 0.1 * a);
+    }
+}
+
 } // namespace
 
 TEST_CASE("bench ladder table and peer at a tiny size write well-formed files") {
@@ -189,13 +241,14 @@ TEST_CASE("bench ladder table and peer at a tiny size write well-formed files") 
     check_ladder_files(out, r);
     check_table_files(out, r);
     check_peer_files(out, r, p);
+    check_efficiency(out, r);
 }
 
 TEST_CASE("bench says clearly when the peer is absent") {
     const std::string dir = tp::test::temp_dir("bench-no-peer");
     const std::string missing = dir + "/no/pathtracer";
-    const auto p = bench("--peer --peer-binary " + shell_quote(missing) +
-                         dir_args(dir + "/out", dir + "/cache"));
+    const auto p = bench("--peer --peer-binary " + shell_quote(missing) + " --blender " +
+                         shell_quote(missing) + dir_args(dir + "/out", dir + "/cache"));
     INFO(p.out);
     REQUIRE(p.exit_code == 0);
     CHECK(contains(p.out,
@@ -205,6 +258,7 @@ TEST_CASE("bench says clearly when the peer is absent") {
     REQUIRE(!s.is_null());
     CHECK(contains(s["reason"].get<std::string>(), "embree-tools"));
     CHECK(contains(read_file(dir + "/out/bench.md"), "- cornell peer: Embree's path tracer"));
+    CHECK(contains(p.out, "skipping cornell time to error: Blender is not at " + missing));
 }
 
 TEST_CASE("bench reuses the cached reference and renders it again when the scene changes") {
