@@ -11,9 +11,9 @@
 #include "shared/surface.h"
 #include "trace_hit.glsl"
 
-// BvhTriangle (vulkan_rt/accel/bvh_builder.h) read as 4 vec4s an item, so that every load is one
-// aligned 16-byte transaction: a (primitive in w), b (with one level the instance in w), c, and
-// the plane normal.
+// The leaf items as 16-byte words, so that every load is one aligned 16-byte transaction: the
+// binary layout's BvhTriangle (vulkan_rt/accel/bvh_builder.h) as 4 words, a (primitive in w), b
+// (with one level the instance in w), c and the plane normal; the wide layout's records (cwbvh.h).
 layout(std430, set = 0, binding = BINDING_BVH_TRIS) readonly buffer BvhTriangleBuffer {
     vec4 bvh_triangle_words[];
 };
@@ -35,25 +35,33 @@ uint g_trace_nodes = 0u;
 uint g_trace_triangles = 0u;
 #endif
 
-// Tests triangle item i with the watertight test (shared/intersect.h) against the ray in the
-// space it is traversed in (origin org, wr from its direction); a hit closer than hit.t replaces
-// hit. With two levels the hit's instance is inst, the one being traversed.
+// Tests the triangle (v0, v1, v2) of plane normal n with the watertight test
+// (shared/intersect.h) against the ray in the space it is traversed in (origin org, wr from its
+// direction); a hit closer than hit.t replaces hit, naming `instance` and `primitive`.
+bool bvh_triangle_test(vec3 org, WatertightRay wr, vec3 v0, vec3 v1, vec3 v2, vec3 n,
+                       uint instance, uint primitive, inout TraceHit hit) {
+#ifdef TP_TRACE_COUNTS
+    ++g_trace_triangles;
+#endif
+    vec3 tuv;
+    if (!intersect_triangle_normal(org, wr, v0, v1, v2, n, hit.t, tuv)) return false;
+    hit.t = tuv.x;
+    hit.instance = instance;
+    hit.primitive = primitive;
+    hit.bary = vec2(tuv.y, tuv.z);
+    return true;
+}
+
+// Tests BvhTriangle item i of the binary layout. With two levels the hit's instance is inst,
+// the one being traversed; with one level the item's own.
 bool bvh_triangle_hit(uint i, vec3 org, WatertightRay wr, bool two_level, uint inst,
                       inout TraceHit hit) {
     vec4 a = bvh_triangle_words[4u * i];
     vec4 b = bvh_triangle_words[4u * i + 1u];
     vec4 c = bvh_triangle_words[4u * i + 2u];
     vec3 n = bvh_triangle_words[4u * i + 3u].xyz;
-#ifdef TP_TRACE_COUNTS
-    ++g_trace_triangles;
-#endif
-    vec3 tuv;
-    if (!intersect_triangle_normal(org, wr, a.xyz, b.xyz, c.xyz, n, hit.t, tuv)) return false;
-    hit.t = tuv.x;
-    hit.instance = two_level ? inst : floatBitsToUint(b.w);
-    hit.primitive = floatBitsToUint(a.w);
-    hit.bary = vec2(tuv.y, tuv.z);
-    return true;
+    return bvh_triangle_test(org, wr, a.xyz, b.xyz, c.xyz, n,
+                             two_level ? inst : floatBitsToUint(b.w), floatBitsToUint(a.w), hit);
 }
 
 #endif // TP_SHADERS_BVH_TRIANGLES_GLSL

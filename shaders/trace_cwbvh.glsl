@@ -13,8 +13,9 @@
 // highest set bit visits them in the octant order the host placed them in (roughly front to
 // back); the next child's node index is child_base + the inner children in lower slots
 // (bitCount of imask). Hit leaves set their triangles' bits, which are tested before the next
-// node. Triangles are the binary layout's BvhTriangle, with its exact watertight test
-// (shared/intersect.h), so a hit reports the same instance and primitive.
+// node. A triangle record holds the floats of the binary layout's BvhTriangle in 48 bytes
+// (cwbvh.h), tested by the same watertight test (shared/intersect.h), so a hit has the same
+// distance and barycentrics; its instance and primitive come from the ID table at the end.
 //
 // Two levels (FEATURE_INSTANCING): the top tree's leaf items name instances. Meeting one pushes
 // what remains of the current triangle and node groups, moves the ray into the instance's object
@@ -94,6 +95,33 @@ uint cwbvh_child_hits(uvec4 w0, uvec4 w1, uvec4 w2, uvec4 w3, uvec4 w4, vec3 org
     return hits;
 }
 
+// Tests triangle record i (cwbvh.h). The hit names record i as its primitive and inst as its
+// instance until cwbvh_hit_ids replaces them with what the record stands for.
+bool cwbvh_triangle_hit(uint i, vec3 org, WatertightRay wr, uint inst, inout TraceHit hit) {
+    uint w = CWBVH_TRIANGLE_WORDS * i + 1u;
+    vec4 a = bvh_triangle_words[w];
+    vec4 b = bvh_triangle_words[w + 1u];
+    vec4 c = bvh_triangle_words[w + 2u];
+    return bvh_triangle_test(org, wr, a.xyz, b.xyz, c.xyz, vec3(a.w, b.w, c.w), inst, i, hit);
+}
+
+// The primitive, and with one level the instance, of the closest hit's record from the ID
+// table (cwbvh.h): read once per query, not in the leaf loop.
+void cwbvh_hit_ids(bool two_level, inout TraceHit hit) {
+    uvec2 head = floatBitsToUint(bvh_triangle_words[0].xy); // the table's word, b
+    bool pairs = head.y == CWBVH_ID_PAIRS;
+    uint u = pairs ? 2u * hit.primitive : hit.primitive;
+    vec4 w = bvh_triangle_words[head.x + (u >> 2u)];
+    uint id = floatBitsToUint(w[u & 3u]);
+    if (pairs) {
+        hit.primitive = id;
+        hit.instance = floatBitsToUint(w[(u & 3u) + 1u]);
+    } else {
+        hit.primitive = id >> head.y;
+        if (!two_level) hit.instance = id & ((1u << head.y) - 1u);
+    }
+}
+
 bool cwbvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
     // False for a mask without instancing: one level, no instance state.
     bool two_level = feature_on(scene_features, FEATURE_INSTANCING);
@@ -145,7 +173,7 @@ bool cwbvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
             if (two_level && inst == BVH_EMPTY) { // a top-level item: enter its instance
                 if (tris.y != 0u) stack[sp++] = tris;
                 if ((group.y & CWBVH_NODE_BITS) != 0u) stack[sp++] = group;
-                inst = floatBitsToUint(bvh_triangle_words[4u * i + 1u].w);
+                inst = floatBitsToUint(bvh_triangle_words[CWBVH_TRIANGLE_WORDS * i + 1u].x);
                 inst_sp = sp;
                 Instance I = instances[inst];
                 org = instance_point_to_object(I, ray.origin);
@@ -156,7 +184,7 @@ bool cwbvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
                 group = uvec2(meshes[I.mesh].bvh_root, CWBVH_ROOT_GROUP);
                 break;
             }
-            if (!bvh_triangle_hit(i, org, wr, two_level, inst, hit)) continue;
+            if (!cwbvh_triangle_hit(i, org, wr, inst, hit)) continue;
             found = true;
             if (any_hit) return true;
         }
@@ -171,6 +199,7 @@ bool cwbvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
             group = stack[--sp];
         }
     }
+    if (found) cwbvh_hit_ids(two_level, hit);
     return found;
 }
 

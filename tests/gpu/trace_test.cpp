@@ -59,6 +59,34 @@ FlatScene instanced_scene() {
     return flatten(s);
 }
 
+// A sphere of 81,920 triangles among 32,768 small quads, each its own mesh: with one level the
+// wide layout's hits name primitives of 17 bits and instances of 16, which do not share one
+// 32-bit ID (wide_bvh.h), so its ID table holds pairs.
+FlatScene many_objects_scene() {
+    Scene s;
+    s.path = "generated: a sphere among 32768 quads";
+    s.materials = {default_material()};
+    s.material_names = {"grey"};
+    s.meshes.push_back(make_icosphere(6, false));
+    s.objects.push_back(Object{});
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<float> u(-1.0f, 1.0f);
+    for (int i = 0; i < 32768; ++i) {
+        s.meshes.push_back(make_quad());
+        Object o;
+        o.name = fmt::format("quad {}", i);
+        o.mesh = uint32_t(s.meshes.size() - 1);
+        glm::mat4 t = glm::translate(glm::mat4(1.0f), vec3(10 * u(rng), 10 * u(rng), 10 * u(rng)));
+        t = glm::rotate(t, 3.14f * u(rng), glm::normalize(vec3(u(rng), u(rng), u(rng)) + 0.1f));
+        o.transform = glm::scale(t, vec3(0.4f));
+        s.objects.push_back(o);
+    }
+    s.camera.given = true;
+    s.camera.eye = vec3(0, 0, 30);
+    s.settings.width = s.settings.height = 8;
+    return flatten(s);
+}
+
 FlatScene bundled(const char* name) {
     std::vector<std::string> warnings;
     return flatten(load_scene(name, warnings));
@@ -217,6 +245,13 @@ TEST_CASE("GPU BVH traversal agrees with Embree with hundreds of instances", "[g
             compare_with_embree(instanced_scene(), kOneLevel, layout);
         }
     }
+}
+
+TEST_CASE("GPU wide BVH traversal agrees with Embree where its IDs do not fit 32 bits", "[gpu]") {
+    const FlatScene scene = many_objects_scene();
+    REQUIRE(build_bvh(scene, kOneLevel, BvhLayout::wide).wide_triangles.words()[0].y ==
+            CWBVH_ID_PAIRS);
+    compare_with_embree(scene, kOneLevel, BvhLayout::wide);
 }
 
 } // namespace tp::test

@@ -2,9 +2,11 @@
 // node against the triangles it holds: every slot's decoded box p + 2^(e - 127) q, in exact
 // arithmetic, contains the exact bounds of everything below that slot (the quantization must
 // round outward: a box that cut off a sliver of a triangle would lose hits), every triangle is
-// reached exactly once, and the meta bytes, imask and child indices follow the format of
-// shaders/cwbvh.h. Over the bundled scenes, the bunny and the Buddha, and random triangle soups
-// with degenerate, tiny-far-away and range-rule-sized triangles. Host only: no device needed.
+// reached exactly once, its record holds the binary layout's floats for the primitive and
+// instance its IDs name, top-level leaves hold one instance each, and the meta bytes, imask and
+// child indices follow the format of shaders/cwbvh.h. Over the bundled scenes, the bunny and the
+// Buddha, and random triangle soups with degenerate, tiny-far-away and range-rule-sized triangles.
+// Host only: no device needed.
 #include "scene/flatten.h"
 #include "scene/load.h"
 #include "scene/world_vertex.h"
@@ -17,6 +19,7 @@
 #include <fmt/format.h>
 #include <glm/gtc/matrix_transform.hpp>
 
+#include <cstring>
 #include <filesystem>
 #include <random>
 #include <set>
@@ -65,6 +68,8 @@ class Walk {
                 const uint32_t o = m & 0x1fu, bits = m >> 5;
                 REQUIRE((bits == 1 || bits == 3 || bits == 7));
                 const uint32_t count = bits == 1 ? 1 : bits == 3 ? 2 : 3;
+                // One instance per top-level leaf: each is entered behind its own box.
+                if (top) REQUIRE(count == 1);
                 // Leaves of one node are stored back to back in slot order and fit 24 bits.
                 REQUIRE(o == offset);
                 offset += count;
@@ -91,26 +96,59 @@ class Walk {
 
   private:
     Box item(uint32_t i, bool top) {
-        REQUIRE(i < bvh_.triangles.size());
-        const BvhTriangle& t = bvh_.triangles[i];
+        REQUIRE(i < bvh_.wide_triangles.records());
         Box b;
         if (!top) {
             items.insert(i);
+            const WideTriangle t = bvh_.wide_triangles.triangle(i);
+            check_record(i, t);
             b.add(t.v0);
             b.add(t.v1);
             b.add(t.v2);
             return b;
         }
         // An instance record: the box must hold the instance's world-space vertices.
-        REQUIRE(t.instance < scene_.instances.size());
-        instances.insert(t.instance);
-        const Instance& inst = scene_.instances[t.instance];
+        const uint32_t instance = bvh_.wide_triangles.instance_item(i);
+        REQUIRE(instance < scene_.instances.size());
+        instances.insert(instance);
+        const Instance& inst = scene_.instances[instance];
         const MeshInfo& m = scene_.meshes[inst.mesh];
         for (uint32_t v = 0; v < m.vertex_count; ++v)
             b.add(instance_point_to_world(inst, scene_.positions[m.first_vertex + v]));
         return b;
     }
 
+    // The record holds, bit for bit, the vertices and plane normal of the binary layout's
+    // BvhTriangle for the primitive (and instance) its IDs name: object-space vertices with
+    // two levels, world_vertex's with one.
+    void check_record(uint32_t i, const WideTriangle& t) {
+        const uint32_t primitive = bvh_.wide_triangles.primitive(i);
+        const uint32_t instance = bvh_.one_level ? bvh_.wide_triangles.instance(i) : 0;
+        REQUIRE(instance < scene_.instances.size());
+        const Instance& inst = scene_.instances[instance];
+        const MeshInfo& m = scene_.meshes[bvh_.one_level ? inst.mesh : mesh_];
+        REQUIRE(primitive < m.triangle_count);
+        const uvec3 tri = scene_.triangles[m.first_triangle + primitive];
+        auto place = [&](uint32_t v) {
+            const vec3 p = scene_.positions[m.first_vertex + v];
+            return bvh_.one_level ? world_vertex(inst, p) : p;
+        };
+        const vec3 v0 = place(tri.x), v1 = place(tri.y), v2 = place(tri.z);
+        const vec3 n = triangle_plane_normal(v0, v1, v2);
+        CHECK(same_bits(t.v0, v0));
+        CHECK(same_bits(t.v1, v1));
+        CHECK(same_bits(t.v2, v2));
+        CHECK(same_bits(t.normal, n));
+        if (bvh_.one_level) one_level_items.insert({instance, primitive});
+    }
+
+    static bool same_bits(vec3 a, vec3 b) { return std::memcmp(&a, &b, sizeof(vec3)) == 0; }
+
+  public:
+    uint32_t mesh_ = 0;                                      // two levels: the mesh walked
+    std::set<std::pair<uint32_t, uint32_t>> one_level_items; // (instance, primitive)
+
+  private:
     const BvhBuild& bvh_;
     const FlatScene& scene_;
 };
@@ -123,6 +161,7 @@ void check_wide(const FlatScene& scene) {
     {
         const BvhBuild bvh = build_bvh(scene, FEATURES_ALL & ~FEATURE_INSTANCING, BvhLayout::wide);
         REQUIRE(bvh.nodes.empty());
+        REQUIRE(bvh.triangles.empty());
         Walk w(bvh, scene);
         w.node(bvh.top_root, false, 1);
         size_t triangles = 0;
@@ -130,13 +169,18 @@ void check_wide(const FlatScene& scene) {
             triangles += scene.meshes[inst.mesh].triangle_count;
         CHECK(w.items.size() == triangles);
         CHECK(std::set<uint32_t>(w.items.begin(), w.items.end()).size() == triangles);
+        CHECK(w.one_level_items.size() == triangles);
+        CHECK(bvh.wide_triangles.records() == triangles);
         CHECK(w.nodes == bvh.wide_nodes.size());
         CHECK(w.depth == bvh.bottom_depth);
         CHECK(bvh.bottom_depth + 2 <= CWBVH_STACK_SIZE);
     }
     const BvhBuild bvh = build_bvh(scene, FEATURES_ALL, BvhLayout::wide);
     Walk w(bvh, scene);
-    for (uint32_t m = 0; m < scene.meshes.size(); ++m) w.node(bvh.mesh_roots[m], false, 1);
+    for (uint32_t m = 0; m < scene.meshes.size(); ++m) {
+        w.mesh_ = m;
+        w.node(bvh.mesh_roots[m], false, 1);
+    }
     size_t stored = 0, with_triangles = 0;
     for (const MeshInfo& m : scene.meshes) stored += m.triangle_count;
     for (const Instance& inst : scene.instances)
@@ -147,6 +191,7 @@ void check_wide(const FlatScene& scene) {
     top.node(bvh.top_root, true, 1);
     CHECK(top.instances.size() == with_triangles);
     CHECK(std::set<uint32_t>(top.instances.begin(), top.instances.end()).size() == with_triangles);
+    CHECK(bvh.wide_triangles.records() == stored + with_triangles);
     CHECK(w.nodes + top.nodes == bvh.wide_nodes.size());
     CHECK(bvh.top_depth + bvh.bottom_depth + 2 <= CWBVH_STACK_SIZE);
 }

@@ -5,6 +5,7 @@
 #include "util/error.h"
 
 #include "vulkan_rt/accel/embree_tree.h"
+#include "vulkan_rt/accel/wide_collapse.h"
 
 #include <algorithm>
 
@@ -96,23 +97,25 @@ class BinaryWriter {
     std::vector<BvhNode>* nodes_;
 };
 
-// Builds the trees of one BvhBuild in its layout: Embree's binary tree as it is, or an 8-ary
-// one with leaves of at most 3 triangles for the compressed wide nodes (wide_bvh.h).
+// Builds the trees of one BvhBuild in its layout: Embree's binary tree as it is, or, from a
+// binary tree with leaves of one item, its SAH-optimal collapse into the compressed wide nodes
+// (wide_collapse.h, wide_bvh.h).
 class Builder {
   public:
     explicit Builder(BvhBuild& out) : out_(out) {}
 
     // Appends a tree over `prims` in the chosen layout; returns its root node index and depth.
-    // Binary leaves hold up to `max_binary_leaf` items.
-    uint32_t build(std::vector<RTCBuildPrimitive> prims, uint32_t max_binary_leaf,
-                   uint32_t max_depth, uint32_t& depth, const LeafEmitter& emit_leaf) {
+    // Leaves hold up to `max_leaf` items (binary; wide: at most CWBVH_MAX_LEAF).
+    uint32_t build(std::vector<RTCBuildPrimitive> prims, uint32_t max_leaf, uint32_t max_depth,
+                   uint32_t& depth, const LeafEmitter& emit_leaf) {
         const bool wide = out_.layout == BvhLayout::wide;
         const TreeNode* top =
-            prims.empty() ? nullptr
-                          : embree_.build(prims, wide ? 8 : 2,
-                                          wide ? CWBVH_MAX_LEAF : max_binary_leaf, max_depth);
+            prims.empty() ? nullptr : embree_.build(prims, wide ? 1 : max_leaf, max_depth);
         const RTCBounds all = bounds_of(prims);
-        if (wide) return write_wide_tree(out_.wide_nodes, top, all, emit_leaf, depth);
+        if (wide)
+            return write_wide_tree(out_.wide_nodes,
+                                   collapse_to_wide(top, all, std::min(max_leaf, CWBVH_MAX_LEAF)),
+                                   emit_leaf, depth);
         return BinaryWriter(out_.nodes).write(top, all, emit_leaf, depth);
     }
 
@@ -121,17 +124,23 @@ class Builder {
     EmbreeTreeBuilder embree_;
 };
 
-// Binary leaves of at most 4 triangles: a leaf is then at most 192 contiguous bytes.
+// Appends a leaf triangle to the layout's triangle array and returns its index there.
+uint32_t add_triangle(BvhBuild& out, const BvhTriangle& t) {
+    if (out.layout == BvhLayout::wide)
+        return out.wide_triangles.add_triangle(t.v0, t.v1, t.v2, t.primitive, t.instance);
+    out.triangles.push_back(t);
+    return uint32_t(out.triangles.size() - 1);
+}
+
+// Binary leaves of at most 4 triangles: a leaf is then at most 192 contiguous bytes. The wide
+// layout's leaves hold at most CWBVH_MAX_LEAF, as the collapse chooses.
 constexpr uint32_t kMaxTrianglesPerLeaf = 4;
-// Depth limits that keep depth(top) + depth(bottom) + 2 within the traversal stack of the
-// layout (BVH_STACK_SIZE, CWBVH_STACK_SIZE); Embree makes its last levels balanced when a
-// branch approaches the limit.
-uint32_t max_bottom_depth(BvhLayout layout) {
-    return layout == BvhLayout::wide ? 20 : 40;
-}
-uint32_t max_top_depth(BvhLayout layout) {
-    return layout == BvhLayout::wide ? 10 : 22;
-}
+// Depth limits of Embree's binary trees that keep depth(top) + depth(bottom) + 2 within the
+// binary traversal's stack (BVH_STACK_SIZE); Embree makes its last levels balanced when a
+// branch approaches the limit. A wide tree has at most the levels of the binary tree it
+// collapses, in practice a third; build_bvh checks it against CWBVH_STACK_SIZE.
+constexpr uint32_t kMaxBottomDepth = 40;
+constexpr uint32_t kMaxTopDepth = 22;
 
 // World box of an object box under an instance transform: the 8 corners transformed, padded by
 // 2^-20 of the largest coordinate so that the float rounding of the transform (a few ulp)
@@ -176,13 +185,13 @@ void build_one_level(const FlatScene& scene, Builder& builder, BvhBuild& out) {
             world.push_back(bt);
         }
     }
-    out.top_root =
-        builder.build(std::move(prims), kMaxTrianglesPerLeaf, max_bottom_depth(out.layout),
-                      out.bottom_depth, [&](const uint32_t* ids, uint32_t n) {
-                          const uint32_t first = uint32_t(out.triangles.size());
-                          for (uint32_t k = 0; k < n; ++k) out.triangles.push_back(world[ids[k]]);
-                          return first;
-                      });
+    out.top_root = builder.build(std::move(prims), kMaxTrianglesPerLeaf, kMaxBottomDepth,
+                                 out.bottom_depth, [&](const uint32_t* ids, uint32_t n) {
+                                     const uint32_t first = add_triangle(out, world[ids[0]]);
+                                     for (uint32_t k = 1; k < n; ++k)
+                                         add_triangle(out, world[ids[k]]);
+                                     return first;
+                                 });
     out.one_level = true;
 }
 
@@ -207,13 +216,15 @@ void build_two_level(const FlatScene& scene, Builder& builder, BvhBuild& out) {
         }
         uint32_t depth = 0;
         out.mesh_roots.push_back(builder.build(
-            std::move(prims), kMaxTrianglesPerLeaf, max_bottom_depth(out.layout), depth,
+            std::move(prims), kMaxTrianglesPerLeaf, kMaxBottomDepth, depth,
             [&](const uint32_t* ids, uint32_t n) {
-                const uint32_t first = uint32_t(out.triangles.size());
+                uint32_t first = 0;
                 for (uint32_t i = 0; i < n; ++i) {
                     const uvec3 tri = scene.triangles[mesh.first_triangle + ids[i]];
                     const vec3* p = &scene.positions[mesh.first_vertex];
-                    out.triangles.push_back(leaf_triangle(p[tri.x], p[tri.y], p[tri.z], ids[i], 0));
+                    const uint32_t k =
+                        add_triangle(out, leaf_triangle(p[tri.x], p[tri.y], p[tri.z], ids[i], 0));
+                    if (i == 0) first = k;
                 }
                 return first;
             }));
@@ -228,19 +239,12 @@ void build_two_level(const FlatScene& scene, Builder& builder, BvhBuild& out) {
         world_box(inst, mesh_lo[inst.mesh], mesh_hi[inst.mesh], lo, hi);
         instances.push_back(make_primitive(lo, hi, i));
     }
-    // Binary leaves name their instance directly (count 1); a wide leaf's items are
-    // consecutive records of the triangle array whose `instance` names one (cwbvh.h).
+    // One instance per leaf in both layouts, so that every instance is entered behind its own
+    // box: a binary leaf names it directly (count 1), a wide leaf by a record (wide_bvh.h).
     const bool wide = out.layout == BvhLayout::wide;
-    out.top_root = builder.build(std::move(instances), 1, max_top_depth(out.layout), out.top_depth,
-                                 [&](const uint32_t* ids, uint32_t n) {
-                                     if (!wide) return ids[0];
-                                     const uint32_t first = uint32_t(out.triangles.size());
-                                     for (uint32_t k = 0; k < n; ++k) {
-                                         BvhTriangle record{};
-                                         record.instance = ids[k];
-                                         out.triangles.push_back(record);
-                                     }
-                                     return first;
+    out.top_root = builder.build(std::move(instances), 1, kMaxTopDepth, out.top_depth,
+                                 [&](const uint32_t* ids, uint32_t) {
+                                     return wide ? out.wide_triangles.add_instance(ids[0]) : ids[0];
                                  });
 }
 
@@ -254,6 +258,7 @@ BvhBuild build_bvh(const FlatScene& scene, uint32_t features, BvhLayout layout) 
         build_two_level(scene, builder, out);
     else
         build_one_level(scene, builder, out);
+    if (layout == BvhLayout::wide) out.wide_triangles.finish(out.one_level);
     const uint32_t stack = layout == BvhLayout::wide ? CWBVH_STACK_SIZE : BVH_STACK_SIZE;
     if (out.top_depth + out.bottom_depth + 2 > stack)
         input_error("the scene's BVH is too deep for the GPU traversal stack ({} + {} levels)",

@@ -1,8 +1,8 @@
 // The compute mode's acceleration structure, built on the host with Embree's BVH builder API
 // (rtcBuildBVH, binned SAH, embree_tree.h) in one of two layouts: binary nodes (shared/intersect.h,
-// traversed by shaders/trace_bvh.glsl) or compressed 8-wide nodes (wide_bvh.h, traversed by
-// shaders/trace_cwbvh.glsl). Either comes in the shape that the render's feature mask asks for
-// (issue 9):
+// traversed by shaders/trace_bvh.glsl) or compressed 8-wide nodes, the SAH-optimal collapse of a
+// binary tree (wide_collapse.h, wide_bvh.h, traversed by shaders/trace_cwbvh.glsl). Either comes in
+// the shape that the render's feature mask asks for (issue 9):
 //   two levels (FEATURE_INSTANCING set): one BVH per mesh in object space, an instanced mesh
 //     stored once, and one over the instances' world boxes;
 //   one level (FEATURE_INSTANCING clear): one BVH over the triangles of every instance in world
@@ -35,9 +35,10 @@ struct BvhBuild {
     // then the top level.
     std::vector<BvhNode> nodes;
     std::vector<WideBvhNode> wide_nodes;
-    // Leaf items, in leaf order; with the wide layout and two levels also the top tree's
-    // instance records (wide_bvh.h).
+    // Leaf items, in leaf order: the binary layout's BvhTriangles, or the wide layout's records
+    // and ID table (wide_bvh.h), with two levels also the top tree's instance records.
     std::vector<BvhTriangle> triangles;
+    WideTriangleBuffer wide_triangles;
     // Two levels, per FlatScene mesh: its root node (MeshInfo::bvh_root); one level: empty.
     std::vector<uint32_t> mesh_roots;
     uint32_t top_root = 0;     // where traversal starts (BatchParams::bvh_top_root)
@@ -47,7 +48,8 @@ struct BvhBuild {
 
     uint64_t bytes() const {
         return nodes.size() * sizeof(BvhNode) + wide_nodes.size() * sizeof(WideBvhNode) +
-               triangles.size() * sizeof(BvhTriangle);
+               triangles.size() * sizeof(BvhTriangle) +
+               wide_triangles.words().size() * sizeof(glm::uvec4);
     }
 };
 

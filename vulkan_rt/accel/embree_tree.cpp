@@ -78,13 +78,13 @@ EmbreeTreeBuilder::~EmbreeTreeBuilder() {
     rtcReleaseDevice(device_);
 }
 
-const TreeNode* EmbreeTreeBuilder::build(std::vector<RTCBuildPrimitive>& prims, uint32_t branching,
-                                         uint32_t max_leaf, uint32_t max_depth) {
+const TreeNode* EmbreeTreeBuilder::build(std::vector<RTCBuildPrimitive>& prims, uint32_t max_leaf,
+                                         uint32_t max_depth) {
     if (bvh_) rtcReleaseBVH(bvh_);
     bvh_ = rtcNewBVH(device_);
     RTCBuildArguments args = rtcDefaultBuildArguments();
     args.buildQuality = RTC_BUILD_QUALITY_MEDIUM; // binned SAH, no spatial splits
-    args.maxBranchingFactor = branching;
+    args.maxBranchingFactor = 2;
     args.maxDepth = max_depth;
     args.minLeafSize = 1;
     args.maxLeafSize = max_leaf;

@@ -1,6 +1,7 @@
-// Embree's BVH builder API (rtcBuildBVH, binned SAH) driven into a plain tree that the compute
-// mode's layouts then store: binary nodes (bvh_builder.cpp) or compressed 8-wide nodes
-// (wide_bvh.cpp). Internal to vulkan_rt: the one place that includes Embree's builder.
+// Embree's BVH builder API (rtcBuildBVH, binned SAH) driven into a plain binary tree that the
+// compute mode's layouts then store: as binary nodes (bvh_builder.cpp), or collapsed into
+// compressed 8-wide nodes (wide_collapse.h, wide_bvh.h). Internal to vulkan_rt: the one place
+// that includes Embree's builder.
 #pragma once
 
 #include "shared/math.h"
@@ -14,7 +15,7 @@
 
 namespace tp {
 
-// A node of the built tree: an inner node with `children` children (2 .. the branching factor)
+// A node of the built tree: an inner node with `children` (2) children
 // or a leaf with `count` > 0 primitive IDs. The memory belongs to the EmbreeTreeBuilder.
 struct TreeNode {
     uint32_t count = 0; // 0: TreeInner; > 0: TreeLeaf with that many items
@@ -44,24 +45,15 @@ class EmbreeTreeBuilder {
     EmbreeTreeBuilder(const EmbreeTreeBuilder&) = delete;
     EmbreeTreeBuilder& operator=(const EmbreeTreeBuilder&) = delete;
 
-    // Builds a tree over `prims` (not empty) with at most `branching` children per inner node
-    // and `max_leaf` items per leaf; valid until the next build. The root may be a leaf.
-    // Throws RuntimeError when Embree fails.
-    const TreeNode* build(std::vector<RTCBuildPrimitive>& prims, uint32_t branching,
-                          uint32_t max_leaf, uint32_t max_depth);
+    // Builds a binary tree over `prims` (not empty) with at most `max_leaf` items per leaf and
+    // `max_depth` levels; valid until the next build. The root may be a leaf. Throws
+    // RuntimeError when Embree fails.
+    const TreeNode* build(std::vector<RTCBuildPrimitive>& prims, uint32_t max_leaf,
+                          uint32_t max_depth);
 
   private:
     RTCDevice device_ = nullptr;
     RTCBVH bvh_ = nullptr;
 };
-
-// Appends the compressed 8-wide nodes of a tree built with branching 8 and leaves of at most 3
-// items (wide_bvh.h) to `nodes` and returns the root's index; `root_bounds` is the box of the
-// whole tree, `depth` the number of node levels. An empty tree (root null) is one node with no
-// children.
-struct WideBvhNode;
-uint32_t write_wide_tree(std::vector<WideBvhNode>& nodes, const TreeNode* root,
-                         const RTCBounds& root_bounds, const LeafEmitter& emit_leaf,
-                         uint32_t& depth);
 
 } // namespace tp

@@ -1,7 +1,7 @@
 #include "vulkan_rt/accel/wide_bvh.h"
 
+#include "shared/intersect.h"
 #include "util/error.h"
-#include "vulkan_rt/accel/embree_tree.h"
 
 #include <algorithm>
 #include <array>
@@ -12,7 +12,7 @@ namespace tp {
 namespace {
 
 struct Child {
-    const TreeNode* node;
+    const WideSlot* slot;
     RTCBounds bounds;
 };
 
@@ -90,15 +90,19 @@ void quantize(const AxisFrame& f, double lo, double hi, uint8_t& qlo, uint8_t& q
 
 class WideWriter {
   public:
-    WideWriter(std::vector<WideBvhNode>& nodes, const LeafEmitter& emit_leaf)
-        : nodes_(nodes), emit_leaf_(emit_leaf) {}
+    WideWriter(std::vector<WideBvhNode>& nodes, const WideTree& tree, const LeafEmitter& emit_leaf)
+        : nodes_(nodes), tree_(tree), emit_leaf_(emit_leaf) {}
 
-    void write(uint32_t index, const std::vector<Child>& children, uint32_t level) {
+    // Writes tree node `t` as nodes_[index]; its inner children go to the end of nodes_.
+    void write(uint32_t index, uint32_t t, uint32_t level) {
         depth = std::max(depth, level);
+        const WideTreeNode& node = tree_.nodes[t];
+        std::vector<Child> children;
         glm::dvec3 lo(FLOAT_MAX), hi(-FLOAT_MAX);
-        for (const Child& c : children) {
-            lo = glm::min(lo, lower(c.bounds));
-            hi = glm::max(hi, upper(c.bounds));
+        for (uint32_t s = 0; s < node.slots; ++s) {
+            children.push_back({&node.slot[s], node.slot[s].bounds});
+            lo = glm::min(lo, lower(node.slot[s].bounds));
+            hi = glm::max(hi, upper(node.slot[s].bounds));
         }
         const std::array<int, 8> child_of_slot = assign_slots(children, 0.5 * (lo + hi));
         WideBvhNode n{};
@@ -110,65 +114,65 @@ class WideWriter {
         }
         n.child_base = uint32_t(nodes_.size());
         uint32_t inner = 0, offset = 0;
-        std::vector<std::pair<uint32_t, const TreeInner*>> pending;
+        std::vector<std::pair<uint32_t, uint32_t>> pending; // (node index, tree node)
         for (uint32_t s = 0; s < 8; ++s) {
             if (child_of_slot[s] < 0) continue;
             const Child& c = children[size_t(child_of_slot[s])];
             for (int a = 0; a < 3; ++a)
                 quantize(frame[a], lower(c.bounds)[a], upper(c.bounds)[a], n.qlo[a][s],
                          n.qhi[a][s]);
-            if (c.node->count == 0) {
+            if (c.slot->count == 0) {
                 n.meta[s] = uint8_t(CWBVH_META_INNER | s);
                 n.imask = uint8_t(n.imask | (1u << s));
-                pending.push_back({n.child_base + inner++, static_cast<const TreeInner*>(c.node)});
+                pending.push_back({n.child_base + inner++, c.slot->node});
                 continue;
             }
-            const auto* leaf = static_cast<const TreeLeaf*>(c.node);
-            const uint32_t first = emit_leaf_(leaf->items, leaf->count);
+            const uint32_t first = emit_leaf_(&tree_.items[c.slot->first], c.slot->count);
             if (offset == 0) n.triangle_base = first;
             // The leaves of one node are stored back to back (the emitters append) and fit the
-            // 24 triangle bits of a hit mask; Embree's leaves respect CWBVH_MAX_LEAF.
-            if (first != n.triangle_base + offset || leaf->count > CWBVH_MAX_LEAF)
+            // 24 triangle bits of a hit mask.
+            if (first != n.triangle_base + offset || c.slot->count > CWBVH_MAX_LEAF)
                 runtime_error("wide BVH: leaf items out of order");
-            n.meta[s] = uint8_t(((1u << leaf->count) - 1u) << 5 | offset);
-            offset += leaf->count;
+            n.meta[s] = uint8_t(((1u << c.slot->count) - 1u) << 5 | offset);
+            offset += c.slot->count;
         }
         nodes_.resize(nodes_.size() + inner);
         nodes_[index] = n;
-        for (const auto& [child_index, node] : pending) {
-            std::vector<Child> grandchildren;
-            for (uint32_t i = 0; i < node->children; ++i)
-                grandchildren.push_back({node->child[i], node->bounds[i]});
-            write(child_index, grandchildren, level + 1);
-        }
+        for (const auto& [child_index, tree_node] : pending)
+            write(child_index, tree_node, level + 1);
     }
 
     uint32_t depth = 0;
 
   private:
     std::vector<WideBvhNode>& nodes_;
+    const WideTree& tree_;
     const LeafEmitter& emit_leaf_;
 };
 
+// The bits that hold v: 0 for 0.
+uint32_t bit_width(uint32_t v) {
+    uint32_t n = 0;
+    while (v >> n) ++n;
+    return n;
+}
+
+// The records' words: (v0, n.x), (v1, n.y), (v2, n.z) (cwbvh.h).
+glm::uvec4 record_word(vec3 v, float n) {
+    return glm::uvec4(glm::floatBitsToUint(v.x), glm::floatBitsToUint(v.y),
+                      glm::floatBitsToUint(v.z), glm::floatBitsToUint(n));
+}
+
 } // namespace
 
-uint32_t write_wide_tree(std::vector<WideBvhNode>& nodes, const TreeNode* root,
-                         const RTCBounds& root_bounds, const LeafEmitter& emit_leaf,
-                         uint32_t& depth) {
+uint32_t write_wide_tree(std::vector<WideBvhNode>& nodes, const WideTree& tree,
+                         const LeafEmitter& emit_leaf, uint32_t& depth) {
     const uint32_t index = uint32_t(nodes.size());
-    nodes.push_back(WideBvhNode{});
+    nodes.push_back(WideBvhNode{}); // no slots: an empty tree, which no ray enters
     depth = 1;
-    if (!root) return index; // no children: no slot is ever hit
-    std::vector<Child> children;
-    if (root->count > 0) {
-        children.push_back({root, root_bounds}); // a tree of one leaf
-    } else {
-        const auto* inner = static_cast<const TreeInner*>(root);
-        for (uint32_t i = 0; i < inner->children; ++i)
-            children.push_back({inner->child[i], inner->bounds[i]});
-    }
-    WideWriter writer(nodes, emit_leaf);
-    writer.write(index, children, 1);
+    if (tree.nodes[0].slots == 0) return index;
+    WideWriter writer(nodes, tree, emit_leaf);
+    writer.write(index, 0, 1);
     depth = writer.depth;
     return index;
 }
@@ -179,6 +183,86 @@ void wide_child_box(const WideBvhNode& node, uint32_t slot, glm::dvec3& lo, glm:
         lo[a] = double(node.p[a]) + scale * node.qlo[a][slot];
         hi[a] = double(node.p[a]) + scale * node.qhi[a][slot];
     }
+}
+
+WideTriangleBuffer::WideTriangleBuffer() : words_(1, glm::uvec4(0u)) {}
+
+uint32_t WideTriangleBuffer::add_triangle(vec3 v0, vec3 v1, vec3 v2, uint32_t primitive,
+                                          uint32_t instance) {
+    const vec3 n = triangle_plane_normal(v0, v1, v2);
+    words_.push_back(record_word(v0, n.x));
+    words_.push_back(record_word(v1, n.y));
+    words_.push_back(record_word(v2, n.z));
+    primitive_.push_back(primitive);
+    instance_.push_back(instance);
+    return records_++;
+}
+
+uint32_t WideTriangleBuffer::add_instance(uint32_t instance) {
+    words_.push_back(glm::uvec4(instance, 0u, 0u, 0u));
+    words_.push_back(glm::uvec4(0u));
+    words_.push_back(glm::uvec4(0u));
+    primitive_.push_back(0u);
+    instance_.push_back(instance);
+    return records_++;
+}
+
+void WideTriangleBuffer::finish(bool one_level) {
+    // One uint per record, primitive << bits | instance, where the instance's bits and the
+    // primitive's fit 32 (always with two levels, whose IDs are primitives alone); else two.
+    uint32_t bits = 0, primitive_bits = 0;
+    for (uint32_t i = 0; i < records_; ++i) {
+        if (one_level) bits = std::max(bits, bit_width(instance_[i]));
+        primitive_bits = std::max(primitive_bits, bit_width(primitive_[i]));
+    }
+    if (bits + primitive_bits > 32) bits = CWBVH_ID_PAIRS;
+    words_[0] = glm::uvec4(uint32_t(words_.size()), bits, 0u, 0u);
+    std::vector<uint32_t> ids;
+    ids.reserve(bits == CWBVH_ID_PAIRS ? 2 * size_t(records_) : records_);
+    for (uint32_t i = 0; i < records_; ++i) {
+        if (bits == CWBVH_ID_PAIRS) {
+            ids.push_back(primitive_[i]);
+            ids.push_back(instance_[i]);
+        } else {
+            ids.push_back(bits == 0 ? primitive_[i] : primitive_[i] << bits | instance_[i]);
+        }
+    }
+    ids.resize((ids.size() + 3) / 4 * 4, 0u);
+    for (size_t i = 0; i < ids.size(); i += 4)
+        words_.push_back(glm::uvec4(ids[i], ids[i + 1], ids[i + 2], ids[i + 3]));
+    primitive_.clear();
+    primitive_.shrink_to_fit();
+    instance_.clear();
+    instance_.shrink_to_fit();
+}
+
+WideTriangle WideTriangleBuffer::triangle(uint32_t record) const {
+    const glm::uvec4* w = &words_[1 + size_t(CWBVH_TRIANGLE_WORDS) * record];
+    auto v = [](glm::uvec4 u) { return glm::uintBitsToFloat(glm::uvec3(u)); };
+    WideTriangle t;
+    t.v0 = v(w[0]);
+    t.v1 = v(w[1]);
+    t.v2 = v(w[2]);
+    t.normal = glm::uintBitsToFloat(glm::uvec3(w[0].w, w[1].w, w[2].w));
+    return t;
+}
+
+uint32_t WideTriangleBuffer::instance_item(uint32_t record) const {
+    return words_[1 + size_t(CWBVH_TRIANGLE_WORDS) * record].x;
+}
+
+uint32_t WideTriangleBuffer::id(uint32_t index) const {
+    return words_[words_[0].x + index / 4][index % 4];
+}
+
+uint32_t WideTriangleBuffer::primitive(uint32_t record) const {
+    const uint32_t bits = words_[0].y;
+    return bits == CWBVH_ID_PAIRS ? id(2 * record) : id(record) >> bits;
+}
+
+uint32_t WideTriangleBuffer::instance(uint32_t record) const {
+    const uint32_t bits = words_[0].y;
+    return bits == CWBVH_ID_PAIRS ? id(2 * record + 1) : id(record) & ((1u << bits) - 1u);
 }
 
 } // namespace tp

@@ -48,9 +48,10 @@ SceneBuffers upload_scene(const VulkanContext& ctx, const FlatScene& scene,
 BvhBuffers upload_bvh(const VulkanContext& ctx, const BvhBuild& bvh) {
     Uploader up(ctx);
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
-    BvhBuffers b{bvh.layout == BvhLayout::wide ? up.add(bvh.wide_nodes, storage)
-                                               : up.add(bvh.nodes, storage),
-                 up.add(bvh.triangles, storage)};
+    const bool wide = bvh.layout == BvhLayout::wide;
+    BvhBuffers b{wide ? up.add(bvh.wide_nodes, storage) : up.add(bvh.nodes, storage),
+                 wide ? up.add(bvh.wide_triangles.words(), storage)
+                      : up.add(bvh.triangles, storage)};
     up.flush();
     return b;
 }
