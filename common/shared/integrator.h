@@ -31,165 +31,200 @@
         statements;                                                                                \
     }
 
-// Radiance estimate of sample `sample_index` of pixel (x, y); rays are counted into `rays`.
-vec3 path_radiance(uint x, uint y, uint sample_index, INOUT(RayCounts) rays) {
-    RngKey key = rng_key(params.sampler_id, params.seed, y * params.camera.width + x, sample_index);
+// A path between two of its vertices: what path_step needs to trace the next one. An engine
+// that traces one sample per call runs path_radiance; one that gives a thread whose path has
+// ended the next sample at once (shaders/render_compute.comp) keeps a PathState per thread and
+// calls path_begin and path_step itself. Either way a sample draws the same numbers and traces
+// the same rays.
+struct PathState {
+    RngKey key;
+    Ray ray; // the next ray to trace
+    vec3 L;  // radiance gathered so far: the sample's estimate once the path has ended
+    vec3 T;  // throughput up to the origin of `ray`
+    float prev_pdf;
+    uint bounce; // scattering events so far
+    uint sample_index;
+    bool prev_specular; // the last scattering was specular, or `ray` is the camera ray
+};
 
-    Ray ray = camera_ray(params.camera, key, x, y);
+// Sample `sample_index` of pixel (x, y) before its first vertex: the camera ray.
+PathState path_begin(uint x, uint y, uint sample_index, INOUT(RayCounts) rays) {
+    PathState st;
+    st.key = rng_key(params.sampler_id, params.seed, y * params.camera.width + x, sample_index);
+    st.ray = camera_ray(params.camera, st.key, x, y);
     ++rays.camera;
+    st.L = vec3(0.0f);
+    st.T = vec3(1.0f);
+    st.prev_pdf = 0.0f;
+    st.bounce = 0u;
+    st.sample_index = sample_index;
+    st.prev_specular = true; // emitters seen directly get full weight
+    return st;
+}
 
-    vec3 L = vec3(0.0f);
-    vec3 T = vec3(1.0f);
-    bool prev_specular = true; // the camera ray: emitters seen directly get full weight
-    float prev_pdf = 0.0f;
-    for (uint bounce = 0u;; ++bounce) {
-        PathVertex rec;
-        PATH_LOG(rec = path_vertex_begin(sample_index, bounce, ray));
-        TraceHit hit;
-        if (!trace_closest(ray, hit)) {
-            if (features_environment(scene_features) && params.env_light != NO_INDEX) {
-                float light_pdf =
-                    scene_light_selection_pdf(params.env_light) * scene_environment_pdf(ray.dir);
-                float mis = emission_mis_weight(prev_specular, prev_pdf, light_pdf);
-                L += T * scene_environment_radiance(ray.dir) * mis;
-                PATH_LOG(rec.emitted = T * scene_environment_radiance(ray.dir) * mis;
-                         rec.mis_emission = mis);
-            }
-            PATH_LOG(rec.radiance = L; path_log_emit(rec, TERM_ESCAPED));
-            break;
+// The path's next vertex, where st.ray met `hit` (`found` false: it escaped): emission there,
+// next-event estimation, scattering and the roulette, and the ray after it. Returns false once
+// the path has ended. For an engine that finds the hits of several paths' rays together.
+bool path_at_hit(INOUT(PathState) st, bool found, TraceHit hit, INOUT(RayCounts) rays) {
+    PathVertex rec;
+    PATH_LOG(rec = path_vertex_begin(st.sample_index, st.bounce, st.ray));
+    if (!found) {
+        if (features_environment(scene_features) && params.env_light != NO_INDEX) {
+            float light_pdf =
+                scene_light_selection_pdf(params.env_light) * scene_environment_pdf(st.ray.dir);
+            float mis = emission_mis_weight(st.prev_specular, st.prev_pdf, light_pdf);
+            st.L += st.T * scene_environment_radiance(st.ray.dir) * mis;
+            PATH_LOG(rec.emitted = st.T * scene_environment_radiance(st.ray.dir) * mis;
+                     rec.mis_emission = mis);
         }
-        uint light_offset = instances[hit.instance].light_offset;
-        SurfacePoint sp = scene_surface(hit);
-        surface_snap_to_ray(sp, ray.origin, ray.dir);
-        Material mat = scene_material(hit.instance, sp.uv);
-        vec3 wo = -ray.dir;
-        PATH_LOG(rec.event = VERTEX_HIT; rec.t = hit.t; rec.instance = hit.instance;
-                 rec.primitive = hit.primitive; rec.bary = hit.bary;
-                 rec.material = instances[hit.instance].material; rec.position = sp.p);
+        PATH_LOG(rec.radiance = st.L; path_log_emit(rec, TERM_ESCAPED));
+        return false;
+    }
+    uint light_offset = instances[hit.instance].light_offset;
+    SurfacePoint sp = scene_surface(hit);
+    surface_snap_to_ray(sp, st.ray.origin, st.ray.dir);
+    Material mat = scene_material(hit.instance, sp.uv);
+    vec3 wo = -st.ray.dir;
+    PATH_LOG(rec.event = VERTEX_HIT; rec.t = hit.t; rec.instance = hit.instance;
+             rec.primitive = hit.primitive; rec.bary = hit.bary;
+             rec.material = instances[hit.instance].material; rec.position = sp.p);
 
-        // 1. Emission, front face only.
-        float cos_emit = dot(sp.ng, wo);
-        PATH_LOG(rec.cos_emit = cos_emit);
-        if (feature_on(scene_features, FEATURE_EMISSIVE_TRIANGLES) && !is_black(mat.ke) &&
-            cos_emit > 0.0f) {
-            float light_pdf = 0.0f;
-            if (light_offset != NO_INDEX) {
-                uint li = light_offset + hit.primitive;
-                light_pdf = scene_light_selection_pdf(li) *
-                            triangle_light_pdf(lights[li].area, hit.t, cos_emit);
-            }
-            float mis = emission_mis_weight(prev_specular, prev_pdf, light_pdf);
-            L += T * mat.ke * mis;
-            PATH_LOG(rec.emitted = T * mat.ke * mis; rec.mis_emission = mis);
+    // 1. Emission, front face only.
+    float cos_emit = dot(sp.ng, wo);
+    PATH_LOG(rec.cos_emit = cos_emit);
+    if (feature_on(scene_features, FEATURE_EMISSIVE_TRIANGLES) && !is_black(mat.ke) &&
+        cos_emit > 0.0f) {
+        float light_pdf = 0.0f;
+        if (light_offset != NO_INDEX) {
+            uint li = light_offset + hit.primitive;
+            light_pdf = scene_light_selection_pdf(li) *
+                        triangle_light_pdf(lights[li].area, hit.t, cos_emit);
         }
+        float mis = emission_mis_weight(st.prev_specular, st.prev_pdf, light_pdf);
+        st.L += st.T * mat.ke * mis;
+        PATH_LOG(rec.emitted = st.T * mat.ke * mis; rec.mis_emission = mis);
+    }
 
-        // 2. The maximum number of scattering events.
-        PATH_LOG(rec.ng = sp.ng; rec.ns = sp.ns);
-        if (bounce >= params.max_depth) {
-            PATH_LOG(rec.radiance = L; path_log_emit(rec, TERM_MAX_DEPTH));
-            break;
-        }
-        if (!feature_on(scene_features, FEATURE_DIELECTRIC) || mat.type != MATERIAL_DIELECTRIC)
-            surface_face_viewer(sp, wo);
-        PATH_LOG(rec.ng = sp.ng; rec.ns = sp.ns);
+    // 2. The maximum number of scattering events.
+    PATH_LOG(rec.ng = sp.ng; rec.ns = sp.ns);
+    if (st.bounce >= params.max_depth) {
+        PATH_LOG(rec.radiance = st.L; path_log_emit(rec, TERM_MAX_DEPTH));
+        return false;
+    }
+    if (!feature_on(scene_features, FEATURE_DIELECTRIC) || mat.type != MATERIAL_DIELECTRIC)
+        surface_face_viewer(sp, wo);
+    PATH_LOG(rec.ng = sp.ng; rec.ns = sp.ns);
 
-        // 3. Next-event estimation. Where TRACE_SHADOW_AFTER_SCATTER holds, the shadow ray waits
-        // for step 4 to be drawn; its contribution still reaches L before anything else does, so
-        // the sums are the same in the same order.
-        bool shadow_pending = false;
-        Ray shadow = ray;
-        vec3 shadow_contrib = vec3(0.0f);
-        if (features_sample_lights(scene_features) && !material_is_delta_in(scene_features, mat) &&
-            params.light_count > 0u) {
-            uvec2 pick = rng_bounce2_bits(key, bounce, RNG_LIGHT_SLOT); // slot and alias coin
-            uint slot = alias_slot_from_bits(pick.x, params.light_count);
-            AliasEntry e = light_table[slot];
-            uint li = alias_resolve(slot, e.prob, e.alias, uint_to_unit_float(pick.y));
-            float sel_pdf = scene_light_selection_pdf(li);
-            vec2 u = rng_bounce2(key, bounce, RNG_LIGHT_U);
-            uvec2 env = rng_bounce2_bits(key, bounce, RNG_ENV_SLOT); // pixel slot and coin
-            LightSample ls = scene_sample_light(li, sp.p, u, env.x, uint_to_unit_float(env.y));
-            PATH_LOG(rec.light = li; rec.light_wi = ls.wi; rec.light_pdf = sel_pdf * ls.pdf;
-                     rec.mis_light = 1.0f; rec.rng[RNG_LIGHT_SLOT] = uint_to_unit_float(pick.x);
-                     rec.rng[RNG_LIGHT_COIN] = uint_to_unit_float(pick.y);
-                     rec.rng[RNG_LIGHT_U] = u.x; rec.rng[RNG_LIGHT_V] = u.y;
-                     rec.rng[RNG_ENV_SLOT] = uint_to_unit_float(env.x);
-                     rec.rng[RNG_ENV_COIN] = uint_to_unit_float(env.y));
-            if (ls.pdf > 0.0f && dot(ls.wi, sp.ng) > 0.0f) {
-                vec3 f = bsdf_eval_in(scene_features, mat, sp.ns, wo, ls.wi);
-                PATH_LOG(rec.light_f = f);
-                if (!is_black(f) && !is_black(ls.radiance)) {
-                    float light_pdf = sel_pdf * ls.pdf;
-                    vec3 contrib = T * f * (dot(sp.ns, ls.wi) / light_pdf) * ls.radiance;
-                    if (features_mis(scene_features) && !ls.delta)
-                        contrib *= power_heuristic(
-                            light_pdf, bsdf_pdf_in(scene_features, mat, sp.ns, wo, ls.wi));
-                    PATH_LOG(rec.light_bsdf_pdf =
-                                 bsdf_pdf_in(scene_features, mat, sp.ns, wo, ls.wi);
-                             rec.mis_light =
-                                 ls.delta ? 1.0f : power_heuristic(light_pdf, rec.light_bsdf_pdf);
-                             rec.nee = contrib);
-                    ++rays.shadow;
-                    Ray sr = shadow_ray(sp.p, sp.p_error, sp.ng, ls, lights[li], TRACE_OFFSET_SLACK,
-                                        SCENE_LIGHT_NORMAL_FROM_VERTICES);
-                    if (TRACE_SHADOW_AFTER_SCATTER) {
-                        shadow_pending = true;
-                        shadow = sr;
-                        shadow_contrib = contrib;
-                    } else {
-                        bool occluded = trace_occluded(sr);
-                        if (!occluded) L += contrib;
-                        PATH_LOG(rec.shadow = occluded ? SHADOW_OCCLUDED : SHADOW_UNOCCLUDED);
-                    }
+    // 3. Next-event estimation. Where TRACE_SHADOW_AFTER_SCATTER holds, the shadow ray waits for
+    // step 4 to be drawn; its contribution still reaches L before anything else does, so the
+    // sums are the same in the same order.
+    bool shadow_pending = false;
+    Ray shadow = st.ray;
+    vec3 shadow_contrib = vec3(0.0f);
+    if (features_sample_lights(scene_features) && !material_is_delta_in(scene_features, mat) &&
+        params.light_count > 0u) {
+        uvec2 pick = rng_bounce2_bits(st.key, st.bounce, RNG_LIGHT_SLOT); // slot and alias coin
+        uint slot = alias_slot_from_bits(pick.x, params.light_count);
+        AliasEntry e = light_table[slot];
+        uint li = alias_resolve(slot, e.prob, e.alias, uint_to_unit_float(pick.y));
+        float sel_pdf = scene_light_selection_pdf(li);
+        vec2 u = rng_bounce2(st.key, st.bounce, RNG_LIGHT_U);
+        uvec2 env = rng_bounce2_bits(st.key, st.bounce, RNG_ENV_SLOT); // pixel slot and coin
+        LightSample ls = scene_sample_light(li, sp.p, u, env.x, uint_to_unit_float(env.y));
+        PATH_LOG(rec.light = li; rec.light_wi = ls.wi; rec.light_pdf = sel_pdf * ls.pdf;
+                 rec.mis_light = 1.0f; rec.rng[RNG_LIGHT_SLOT] = uint_to_unit_float(pick.x);
+                 rec.rng[RNG_LIGHT_COIN] = uint_to_unit_float(pick.y); rec.rng[RNG_LIGHT_U] = u.x;
+                 rec.rng[RNG_LIGHT_V] = u.y; rec.rng[RNG_ENV_SLOT] = uint_to_unit_float(env.x);
+                 rec.rng[RNG_ENV_COIN] = uint_to_unit_float(env.y));
+        if (ls.pdf > 0.0f && dot(ls.wi, sp.ng) > 0.0f) {
+            vec3 f = bsdf_eval_in(scene_features, mat, sp.ns, wo, ls.wi);
+            PATH_LOG(rec.light_f = f);
+            if (!is_black(f) && !is_black(ls.radiance)) {
+                float light_pdf = sel_pdf * ls.pdf;
+                vec3 contrib = st.T * f * (dot(sp.ns, ls.wi) / light_pdf) * ls.radiance;
+                if (features_mis(scene_features) && !ls.delta)
+                    contrib *= power_heuristic(light_pdf,
+                                               bsdf_pdf_in(scene_features, mat, sp.ns, wo, ls.wi));
+                PATH_LOG(rec.light_bsdf_pdf = bsdf_pdf_in(scene_features, mat, sp.ns, wo, ls.wi);
+                         rec.mis_light =
+                             ls.delta ? 1.0f : power_heuristic(light_pdf, rec.light_bsdf_pdf);
+                         rec.nee = contrib);
+                ++rays.shadow;
+                Ray sr = shadow_ray(sp.p, sp.p_error, sp.ng, ls, lights[li], TRACE_OFFSET_SLACK,
+                                    SCENE_LIGHT_NORMAL_FROM_VERTICES);
+                if (TRACE_SHADOW_AFTER_SCATTER) {
+                    shadow_pending = true;
+                    shadow = sr;
+                    shadow_contrib = contrib;
+                } else {
+                    bool occluded = trace_occluded(sr);
+                    if (!occluded) st.L += contrib;
+                    PATH_LOG(rec.shadow = occluded ? SHADOW_OCCLUDED : SHADOW_UNOCCLUDED);
                 }
             }
         }
-
-        // 4. Scattering. The lobe choice shares a Sobol pair with the roulette (rng.h); the pair
-        // is drawn only where one of them is read (the roulette's number from min_depth on), and
-        // a skipped draw leaves every other number as it is (rng.h's layout is fixed).
-        bool lobe_or_roulette_read = bsdf_reads_lobe_choice_in(scene_features, mat) ||
-                                     bounce + 1u >= params.min_depth || path_log_recording;
-        vec2 lobe_roulette =
-            lobe_or_roulette_read ? rng_bounce2(key, bounce, RNG_LOBE) : vec2(0.0f);
-        vec2 dir_uv = rng_bounce2(key, bounce, RNG_DIR_U);
-        BsdfSample bs = bsdf_sample_in(scene_features, mat, sp.ns, wo, lobe_roulette.x, dir_uv);
-        PATH_LOG(rec.rng[RNG_LOBE] = lobe_roulette.x; rec.rng[RNG_DIR_U] = dir_uv.x;
-                 rec.rng[RNG_DIR_V] = dir_uv.y; rec.lobe = bs.lobe; rec.wi = bs.wi;
-                 rec.bsdf_pdf = bs.pdf; rec.bsdf_weight = bs.weight; rec.radiance = L;
-                 rec.throughput = T);
-        bool scatter = bs.lobe != LOBE_NONE && scatter_is_consistent(sp.ng, wo, bs.wi, bs.lobe);
-        Ray next = ray;
-        if (TRACE_SHADOW_AFTER_SCATTER) {
-            next = spawn_ray(sp.p, sp.p_error, sp.ng, bs.wi, TRACE_OFFSET_SLACK);
-            if (shadow_pending) {
-                bool occluded = trace_occluded(shadow);
-                if (!occluded) L += shadow_contrib;
-                PATH_LOG(rec.shadow = occluded ? SHADOW_OCCLUDED : SHADOW_UNOCCLUDED;
-                         rec.radiance = L);
-            }
-        }
-        if (!scatter) {
-            PATH_LOG(
-                path_log_emit(rec, bs.lobe == LOBE_NONE ? TERM_NO_SCATTER : TERM_INCONSISTENT));
-            break;
-        }
-        T *= bs.weight;
-        prev_specular = (bs.lobe & LOBE_SPECULAR) != 0u;
-        prev_pdf = bs.pdf;
-        PATH_LOG(rec.rng[RNG_ROULETTE] = lobe_roulette.y;
-                 rec.roulette_q = roulette_survival(T, bounce + 1u, params.min_depth));
-        if (!roulette_apply(T, bounce + 1u, params.min_depth, lobe_roulette.y)) {
-            PATH_LOG(rec.throughput = T; path_log_emit(rec, TERM_ROULETTE));
-            break;
-        }
-        ray = TRACE_SHADOW_AFTER_SCATTER
-                  ? next
-                  : spawn_ray(sp.p, sp.p_error, sp.ng, bs.wi, TRACE_OFFSET_SLACK);
-        ++rays.extension;
-        PATH_LOG(rec.throughput = T; path_log_emit(rec, TERM_CONTINUE));
     }
-    return L;
+
+    // 4. Scattering. The lobe choice shares a Sobol pair with the roulette (rng.h); the pair
+    // is drawn only where one of them is read (the roulette's number from min_depth on), and
+    // a skipped draw leaves every other number as it is (rng.h's layout is fixed).
+    bool lobe_or_roulette_read = bsdf_reads_lobe_choice_in(scene_features, mat) ||
+                                 st.bounce + 1u >= params.min_depth || path_log_recording;
+    vec2 lobe_roulette =
+        lobe_or_roulette_read ? rng_bounce2(st.key, st.bounce, RNG_LOBE) : vec2(0.0f);
+    vec2 dir_uv = rng_bounce2(st.key, st.bounce, RNG_DIR_U);
+    BsdfSample bs = bsdf_sample_in(scene_features, mat, sp.ns, wo, lobe_roulette.x, dir_uv);
+    PATH_LOG(rec.rng[RNG_LOBE] = lobe_roulette.x; rec.rng[RNG_DIR_U] = dir_uv.x;
+             rec.rng[RNG_DIR_V] = dir_uv.y; rec.lobe = bs.lobe; rec.wi = bs.wi;
+             rec.bsdf_pdf = bs.pdf; rec.bsdf_weight = bs.weight; rec.radiance = st.L;
+             rec.throughput = st.T);
+    bool scatter = bs.lobe != LOBE_NONE && scatter_is_consistent(sp.ng, wo, bs.wi, bs.lobe);
+    Ray next = st.ray;
+    if (TRACE_SHADOW_AFTER_SCATTER) {
+        next = spawn_ray(sp.p, sp.p_error, sp.ng, bs.wi, TRACE_OFFSET_SLACK);
+        if (shadow_pending) {
+            bool occluded = trace_occluded(shadow);
+            if (!occluded) st.L += shadow_contrib;
+            PATH_LOG(rec.shadow = occluded ? SHADOW_OCCLUDED : SHADOW_UNOCCLUDED;
+                     rec.radiance = st.L);
+        }
+    }
+    if (!scatter) {
+        PATH_LOG(path_log_emit(rec, bs.lobe == LOBE_NONE ? TERM_NO_SCATTER : TERM_INCONSISTENT));
+        return false;
+    }
+    st.T *= bs.weight;
+    st.prev_specular = (bs.lobe & LOBE_SPECULAR) != 0u;
+    st.prev_pdf = bs.pdf;
+    PATH_LOG(rec.rng[RNG_ROULETTE] = lobe_roulette.y;
+             rec.roulette_q = roulette_survival(st.T, st.bounce + 1u, params.min_depth));
+    if (!roulette_apply(st.T, st.bounce + 1u, params.min_depth, lobe_roulette.y)) {
+        PATH_LOG(rec.throughput = st.T; path_log_emit(rec, TERM_ROULETTE));
+        return false;
+    }
+    st.ray = TRACE_SHADOW_AFTER_SCATTER
+                 ? next
+                 : spawn_ray(sp.p, sp.p_error, sp.ng, bs.wi, TRACE_OFFSET_SLACK);
+    ++rays.extension;
+    PATH_LOG(rec.throughput = st.T; path_log_emit(rec, TERM_CONTINUE));
+    ++st.bounce;
+    return true;
+}
+
+// Traces the path's next vertex and makes the ray after it. Returns false once the path has
+// ended.
+bool path_step(INOUT(PathState) st, INOUT(RayCounts) rays) {
+    TraceHit hit;
+    bool found = trace_closest(st.ray, hit);
+    return path_at_hit(st, found, hit, rays);
+}
+
+// Radiance estimate of sample `sample_index` of pixel (x, y); rays are counted into `rays`.
+vec3 path_radiance(uint x, uint y, uint sample_index, INOUT(RayCounts) rays) {
+    PathState st = path_begin(x, y, sample_index, rays);
+    while (path_step(st, rays)) {
+    }
+    return st.L;
 }
 
 #endif // TP_SHARED_INTEGRATOR_H

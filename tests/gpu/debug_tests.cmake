@@ -11,8 +11,9 @@ set(BUG_SWAP_BARY shaders/bvh_triangles.glsl
     "hit.bary = vec2(tuv.y, tuv.z)" "hit.bary = vec2(tuv.z, tuv.y)")
 set(BUG_LIGHT_PDF common/shared/lights.h
     "return dist * dist / (cos_light * area)" "return 2.0f * dist * dist / (cos_light * area)")
-set(BUG_RNG_DIM common/shared/integrator.h "vec2 dir_uv = rng_bounce2(key, bounce, RNG_DIR_U)"
-    "vec2 dir_uv = rng_bounce2(key, bounce, RNG_DIR_U).xx")
+set(BUG_RNG_DIM common/shared/integrator.h
+    "vec2 dir_uv = rng_bounce2(st.key, st.bounce, RNG_DIR_U)"
+    "vec2 dir_uv = rng_bounce2(st.key, st.bounce, RNG_DIR_U).xx")
 file(GLOB_RECURSE BUG_SOURCES CONFIGURE_DEPENDS ${PROJECT_SOURCE_DIR}/shaders/*
      ${PROJECT_SOURCE_DIR}/common/shared/*)
 foreach(bug FRESNEL_SIGN SWAP_BARY LIGHT_PDF RNG_DIM)
