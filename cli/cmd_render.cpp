@@ -29,6 +29,7 @@ struct RenderArgs : SceneArgs {
     std::optional<std::string> output; // each output: given (perhaps as "") or not
     std::string backend = "cpu";
     std::optional<std::string> bvh; // --bvh binary|wide (compute mode's BVH layout)
+    uint32_t gpu_invocations = 0;   // --gpu-invocations (docs/gpu.md, "Work items")
     double time_limit = 0;
     uint32_t sample_offset = 0;
     std::optional<std::string> stats, png;
@@ -129,6 +130,7 @@ int run_render(const RenderArgs& a) {
     opt.sampler = sampler_from_name(a.sampler);
     opt.time_limit_s = a.time_limit;
     opt.threads = a.threads;
+    opt.gpu_invocations = a.gpu_invocations;
     opt.all_features = a.features == "all";
     opt.progress = bar.callback();
     opt.debug = debug;
@@ -188,6 +190,10 @@ Subcommand add_render_command(CLI::App& app) {
         ->check(CLI::IsMember({"cpu", "vulkan"}));
     c->add_option("--bvh", a->bvh, "Compute mode's BVH layout")
         ->check(CLI::IsMember({"binary", "wide"}));
+    c->add_option("--gpu-invocations", a->gpu_invocations,
+                  "Vulkan: render invocations per launch (0: as many as the device keeps "
+                  "resident where it says, else one per sample; docs/gpu.md)")
+        ->check(CLI::Range(0u, 1u << 30));
     c->add_option("--time-limit", a->time_limit, "Stop after this many seconds (whole passes)")
         ->check(number_in(0.0, 1e9));
     c->add_option("--sample-offset", a->sample_offset,

@@ -55,6 +55,9 @@ layout(scalar, set = 0, binding = BINDING_ACCUM) buffer AccumBuffer {
 layout(scalar, set = 0, binding = BINDING_COUNTERS) buffer CounterBuffer {
     uint counters[];
 };
+layout(scalar, set = 0, binding = BINDING_SAMPLES) buffer SampleBuffer {
+    vec4 sample_radiance[]; // by work item (interface.h)
+};
 
 layout(push_constant, scalar) uniform BatchBlock {
     BatchParams batch;

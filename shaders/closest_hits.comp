@@ -3,7 +3,7 @@
 // compute mode's trace include (trace_bvh.glsl, or with TP_TRACE_WIDE trace_cwbvh.glsl; the
 // render shader's bindings and BVH, in the shape its feature mask gives), the closest hit and
 // the occlusion query's answer back. On lavapipe every loop of a SIMD group stops silently once
-// the group has iterated 65535 times (shaders/accumulate.glsl); a probe loop after the traces
+// the group has iterated 65535 times (shaders/render_items.glsl); a probe loop after the traces
 // reports whether that budget held, so that a cut traversal is never mistaken for a miss.
 #extension GL_GOOGLE_include_directive : require
 

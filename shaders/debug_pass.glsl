@@ -1,6 +1,6 @@
 // The debug variant's passes other than rendering (shared/path_log.h, DEBUG_PASS_*), for every
 // entry point: the AOVs of every pixel, and the path log of the debug pixel. Include after
-// accumulate.glsl. The entry point calls debug_pass for debug_header.pass != DEBUG_PASS_RENDER.
+// render_items.glsl. The entry point calls debug_pass for debug_header.pass != DEBUG_PASS_RENDER.
 #ifndef TP_SHADERS_DEBUG_PASS_GLSL
 #define TP_SHADERS_DEBUG_PASS_GLSL
 

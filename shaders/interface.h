@@ -36,17 +36,20 @@ const uint BINDING_ACCUM = 15u;      // PixelAccum[width * height]
 const uint BINDING_COUNTERS = 16u;   // uint[COUNTER_WORDS]
 const uint BINDING_DEBUG = 17u;      // DebugHeader + PathVertex[] (debug variant only)
 const uint BINDING_AOV = 18u;        // PixelAov[width * height] (debug variant only)
-const uint BINDING_COUNT = 19u;
+const uint BINDING_SAMPLES = 19u;    // vec4[]: one batch's sample estimates, by work item
+const uint BINDING_COUNT = 20u;
 
 // ---- specialization constants (shaders/features.glsl) ---------------------------------------
 const uint SPEC_SCENE_FEATURES = 0u; // uint: the FEATURE_* mask the path loop is compiled for
 
 // ---- push constants of one dispatch ----------------------------------------------------------
 // The dispatch covers rows [row_begin, row_end) of the image, every column, and samples
-// [sample_begin, sample_begin + sample_count) of each of those pixels.
+// [sample_begin, sample_begin + sample_count) of each of those pixels: item_count work items
+// (batch_item_count), each one sample of one pixel (item_pixel), which the render shader's
+// invocations take from a counter in any order and the resolve pass sums in sample order.
 // Each accumulator slot of a pixel continues from max(next_sample, sample_begin) (PixelAccum),
 // rounded up to the slot's residue class: next_sample is already the first index of that class
-// at or after sample_begin, unless a dispatch of this batch was cut short (accumulate.glsl, loop
+// at or after sample_begin, unless a dispatch of this batch was cut short (render_items.glsl, loop
 // budget) and is being repeated (then it is later), or it is still 0 before the first batch of
 // a render that starts at a --sample-offset.
 struct BatchParams {
@@ -56,8 +59,16 @@ struct BatchParams {
     uint row_end;
     uint bvh_top_root;     // compute mode: the top-level root node
     uint env_table_size;   // entries of the environment-map pixel table (0: none)
-    uint probe_iterations; // LOOP_PROBE_ITERATIONS (accumulate.glsl)
-    uint pad0;
+    uint probe_iterations; // LOOP_PROBE_ITERATIONS (shaders/render_items.glsl)
+    uint item_count;       // batch_item_count of the rows and samples above
+    // Items an invocation takes at most: all it can where the launch keeps the device full
+    // and no more (render_invocations), else ceil(item_count / invocations), so that on a
+    // device that runs invocations one after another (lavapipe) every invocation traces its
+    // share instead of the first ones taking all.
+    uint items_per_invocation;
+    // Marks the batch's estimates in the sample buffer: an item whose slot carries another tag
+    // is not traced yet (a batch takes a new tag; its repeated dispatches keep it).
+    uint sample_tag;
 };
 
 const uint LOOP_PROBE_ITERATIONS = 2u;
@@ -79,22 +90,69 @@ inline uint accum_slots(uint sampler_id) {
     return sampler_id == SAMPLER_SOBOL ? SOBOL_BATCHES : 1u;
 }
 
+// ---- work items -------------------------------------------------------------------------------
+// A dispatch's items, in order: sample by sample, and within a sample the rows' pixels in tiles
+// of ITEM_TILE_X x ITEM_TILE_Y (one 32-wide subgroup's camera rays stay as coherent as an 8 x 4
+// block of pixels), tiles in row-major order. Tiles that overhang the image or the rows give
+// items without a pixel, which the render shader skips.
+const uint ITEM_TILE_X = 8u;
+const uint ITEM_TILE_Y = 4u;
+const uint ITEM_TILE_PIXELS = ITEM_TILE_X * ITEM_TILE_Y;
+
+// The items of one sample of rows [row_begin, row_end) of an image `width` pixels wide.
+inline uint batch_tiled_pixels(uint width, uint row_begin, uint row_end) {
+    uint tiles_x = (width + ITEM_TILE_X - 1u) / ITEM_TILE_X;
+    uint tiles_y = (row_end - row_begin + ITEM_TILE_Y - 1u) / ITEM_TILE_Y;
+    return tiles_x * tiles_y * ITEM_TILE_PIXELS;
+}
+
+inline uint batch_item_count(uint width, uint row_begin, uint row_end, uint sample_count) {
+    return batch_tiled_pixels(width, row_begin, row_end) * sample_count;
+}
+
+// Item `item` of a dispatch: its pixel (x, y) in .xy and its sample (sample_begin + .z); .x is
+// `width` or more for an item without a pixel.
+inline uvec3 item_pixel(uint item, uint width, uint row_begin, uint row_end) {
+    uint per_sample = batch_tiled_pixels(width, row_begin, row_end);
+    uint i = item % per_sample;
+    uint tile = i / ITEM_TILE_PIXELS;
+    uint lane = i % ITEM_TILE_PIXELS;
+    uint tiles_x = (width + ITEM_TILE_X - 1u) / ITEM_TILE_X;
+    uint x = (tile % tiles_x) * ITEM_TILE_X + lane % ITEM_TILE_X;
+    uint y = row_begin + (tile / tiles_x) * ITEM_TILE_Y + lane / ITEM_TILE_X;
+    return uvec3(y < row_end ? x : width, y, item / per_sample);
+}
+
+// The item of pixel (x, y) and sample sample_begin + j: the inverse of item_pixel.
+inline uint pixel_item(uint x, uint y, uint j, uint width, uint row_begin, uint row_end) {
+    uint tiles_x = (width + ITEM_TILE_X - 1u) / ITEM_TILE_X;
+    uint r = y - row_begin;
+    uint tile = (r / ITEM_TILE_Y) * tiles_x + x / ITEM_TILE_X;
+    uint lane = (r % ITEM_TILE_Y) * ITEM_TILE_X + x % ITEM_TILE_X;
+    return j * batch_tiled_pixels(width, row_begin, row_end) + tile * ITEM_TILE_PIXELS + lane;
+}
+
+// An item's slot in the BINDING_SAMPLES array: its sample's radiance in .xyz and, in .w, the
+// bits of the batch's sample_tag once it is traced.
+
 // Ray and sample counters, each a 64-bit value as (low, high) 32-bit words so that any Vulkan
 // device can add to them with 32-bit atomics and an explicit carry. COUNTER_TRUNCATED counts
-// the invocations of the last dispatch that stopped before their last sample; the host clears
-// it before every dispatch.
+// the pixel slots that the last dispatch's resolve pass left before their last sample; the host
+// clears it before every dispatch. COUNTER_NEXT_ITEM (one word) is the next item a render
+// invocation takes, also cleared before every dispatch.
 const uint COUNTER_CAMERA = 0u;
 const uint COUNTER_EXTENSION = 2u;
 const uint COUNTER_SHADOW = 4u;
 const uint COUNTER_NAN = 6u;
 const uint COUNTER_TRUNCATED = 8u;
-const uint COUNTER_WORDS = 10u;
+const uint COUNTER_NEXT_ITEM = 10u;
+const uint COUNTER_WORDS = 11u;
 
-const uint RENDER_GROUP_X = 8u; // compute workgroup: 8 x 8 pixels
-const uint RENDER_GROUP_Y = 8u;
+const uint RENDER_GROUP_SIZE = 64u; // render invocations per workgroup (compute mode)
+const uint RESOLVE_GROUP_SIZE = 64u;
 
 #ifdef __cplusplus
-static_assert(sizeof(BatchParams) == 32, "BatchParams layout");
+static_assert(sizeof(BatchParams) == 40, "BatchParams layout");
 static_assert(sizeof(PixelAccum) == 56 && offsetof(PixelAccum, next_sample) == 52,
               "PixelAccum layout");
 #endif

@@ -15,7 +15,7 @@ struct RayHit {
     uint primitive; // its triangle within the instance's mesh,
     vec2 bary;      // and the weights of the triangle's vertices 1 and 2
     uint occluded;  // trace_occluded's answer for the same ray
-    // Compute mode: the loop budget held (shaders/accumulate.glsl), so the answers are final;
+    // Compute mode: the loop budget held (shaders/render_items.glsl), so the answers are final;
     // always 1 in pipeline mode.
     uint budget_held;
 };

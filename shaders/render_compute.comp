@@ -1,7 +1,8 @@
 #version 460
-// Compute-mode entry point: one invocation per pixel of the batch's rows, each tracing the
-// batch's samples of its pixel with the software-BVH trace include: the binary BVH's, or with
-// TP_TRACE_WIDE the compressed 8-wide BVH's (vulkan_rt/CMakeLists.txt builds both modules).
+// Compute-mode entry point: the render invocations (render_items.glsl) with the software-BVH
+// trace include: the binary BVH's, or with TP_TRACE_WIDE the compressed 8-wide BVH's
+// (vulkan_rt/CMakeLists.txt builds both modules). The debug variant's other passes take one
+// invocation per pixel of the batch's rows.
 #extension GL_GOOGLE_include_directive : require
 
 #include "bindings.glsl"
@@ -14,22 +15,20 @@
 #include "debug.glsl"
 #endif
 #include "integrator.glsl"
-#include "accumulate.glsl"
+#include "render_items.glsl"
 #ifdef TP_DEBUG_SHADER
 #include "debug_pass.glsl"
 #endif
 
-layout(local_size_x = RENDER_GROUP_X, local_size_y = RENDER_GROUP_Y) in;
+layout(local_size_x = RENDER_GROUP_SIZE) in;
 
 void main() {
-    uvec2 pixel = uvec2(gl_GlobalInvocationID.x, batch.row_begin + gl_GlobalInvocationID.y);
 #ifdef TP_DEBUG_SHADER
     if (debug_header.pass != DEBUG_PASS_RENDER) { // uniform: the whole dispatch returns
-        debug_pass(pixel);
+        uint i = gl_GlobalInvocationID.x;
+        debug_pass(uvec2(i % params.camera.width, batch.row_begin + i / params.camera.width));
         return;
     }
 #endif
-    PixelCounts c = pixel_counts_zero();
-    if (pixel.x < params.camera.width && pixel.y < batch.row_end) c = render_pixel(pixel);
-    counters_flush(c);
+    render_items();
 }

@@ -35,6 +35,10 @@ struct RenderOptions {
     std::function<SampleGrant(double pixel_samples_per_second)> sample_source;
     double time_limit_s = 0; // 0: none; otherwise stop after the pass that crosses it
     uint32_t threads = 0;    // CPU threads; 0: all cores
+    // Vulkan: render invocations per launch, which share its samples (docs/gpu.md, "Work
+    // items"); 0: as many as the device keeps resident where it says (NVIDIA), else one per
+    // sample.
+    uint32_t gpu_invocations = 0;
     // `--features all`: render with the path loop that has every feature compiled in instead
     // of the one specialized to the scene's features (scene/features.h), for comparisons.
     bool all_features = false;

@@ -33,7 +33,7 @@
 
 // A path between two of its vertices: what path_step needs to trace the next one. An engine
 // that traces one sample per call runs path_radiance; one that gives a thread whose path has
-// ended the next sample at once (shaders/render_compute.comp) keeps a PathState per thread and
+// ended the next sample at once (shaders/render_items.glsl) keeps a PathState per thread and
 // calls path_begin and path_step itself. Either way a sample draws the same numbers and traces
 // the same rays.
 struct PathState {

@@ -13,12 +13,14 @@
 #include "vulkan_rt/device/device_info.h"
 #include "vulkan_rt/device/vk_error.h"
 #include "vulkan_rt/renderer/batch_planner.h"
+#include "vulkan_rt/renderer/batch_session.h"
 
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>
 
 #include <random>
 #include <set>
+#include <tuple>
 
 using namespace tp;
 
@@ -74,7 +76,8 @@ TEST_CASE("device selection by index or name substring or best type", "[gpu]") {
 TEST_CASE("what compute mode needs", "[gpu]") {
     DeviceCaps caps;
     caps.api_version = VK_API_VERSION_1_2;
-    caps.float64 = caps.scalar_layout = caps.subgroup_arithmetic = caps.compute_queue = true;
+    caps.float64 = caps.scalar_layout = caps.subgroup_arithmetic = caps.subgroup_ballot =
+        caps.compute_queue = true;
     caps.max_storage_buffers = 32;
     CHECK(compute_mode_missing(caps).empty());
     caps.float64 = false;
@@ -141,6 +144,57 @@ TEST_CASE("a slow device gets bands of rows and a fast one several samples per p
     }
     CHECK(fast.next().sample_count ==
           std::min(BatchPlanner::kMaxSamplesPerBatch, 1000 - fast.samples_done()));
+}
+
+TEST_CASE("the planner never plans more than the largest submission it is given", "[gpu]") {
+    BatchPlanner plan(1920, 1080, 4096, 0.1, 1 << 20, 1 << 22);
+    for (int i = 0; i < 20 && !plan.done(); ++i) {
+        const Batch b = plan.next();
+        CHECK(uint64_t(1920) * (b.row_end - b.row_begin) * b.sample_count <= (1u << 22));
+        plan.completed(b, 1e-9); // infinitely fast: it would grow without the bound
+    }
+    CHECK(plan.work() == (1u << 22));
+}
+
+// Work items (shaders/interface.h): every pixel of the rows once per sample, items without a
+// pixel only where a tile overhangs, and pixel_item the inverse of item_pixel.
+TEST_CASE("a batch's work items are its pixel-samples, each once", "[gpu]") {
+    struct Case {
+        uint32_t width, row_begin, row_end, samples;
+    };
+    for (const Case c :
+         {Case{16, 0, 8, 3}, Case{13, 5, 12, 2}, Case{1, 0, 1, 4}, Case{37, 3, 4, 1}}) {
+        CAPTURE(c.width, c.row_begin, c.row_end, c.samples);
+        const uint32_t items = batch_item_count(c.width, c.row_begin, c.row_end, c.samples);
+        const uint32_t tiles_x = (c.width + ITEM_TILE_X - 1) / ITEM_TILE_X;
+        const uint32_t tiles_y = (c.row_end - c.row_begin + ITEM_TILE_Y - 1) / ITEM_TILE_Y;
+        CHECK(items == tiles_x * tiles_y * ITEM_TILE_PIXELS * c.samples);
+        std::set<std::tuple<uint32_t, uint32_t, uint32_t>> seen;
+        uint32_t without_pixel = 0;
+        for (uint32_t i = 0; i < items; ++i) {
+            const uvec3 p = item_pixel(i, c.width, c.row_begin, c.row_end);
+            if (p.x >= c.width) {
+                ++without_pixel;
+                continue;
+            }
+            REQUIRE(p.y >= c.row_begin);
+            REQUIRE(p.y < c.row_end);
+            REQUIRE(p.z < c.samples);
+            CHECK(seen.insert({p.x, p.y, p.z}).second);
+            CHECK(pixel_item(p.x, p.y, p.z, c.width, c.row_begin, c.row_end) == i);
+        }
+        CHECK(seen.size() == size_t(c.width) * (c.row_end - c.row_begin) * c.samples);
+        CHECK(without_pixel == items - seen.size());
+    }
+}
+
+TEST_CASE("render launches: one invocation per item unless the device keeps fewer resident",
+          "[gpu]") {
+    CHECK(BatchSession::render_invocations(1000, 0) == 1000);
+    CHECK(BatchSession::render_invocations(1000, 270336) == 1000);
+    CHECK(BatchSession::render_invocations(1u << 24, 270336) == 270336);
+    CHECK(BatchSession::render_invocations(uint64_t(1) << 30, 0) == BatchSession::kMaxInvocations);
+    CHECK(BatchSession::render_invocations(0, 0) == 1);
 }
 
 namespace {

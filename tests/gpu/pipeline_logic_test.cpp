@@ -51,7 +51,8 @@ void check_regions(const SbtProperties& p, const SbtLayout& l, uint32_t miss, ui
 DeviceCaps compute_caps() {
     DeviceCaps caps;
     caps.api_version = VK_API_VERSION_1_2;
-    caps.float64 = caps.scalar_layout = caps.subgroup_arithmetic = caps.compute_queue = true;
+    caps.float64 = caps.scalar_layout = caps.subgroup_arithmetic = caps.subgroup_ballot =
+        caps.compute_queue = true;
     caps.max_storage_buffers = 32;
     return caps;
 }
@@ -60,7 +61,7 @@ DeviceCaps pipeline_caps() {
     DeviceCaps caps = compute_caps();
     for (const char* e : pipeline_extensions()) caps.extensions.push_back(e);
     caps.acceleration_structure = caps.ray_tracing_pipeline = caps.buffer_device_address = true;
-    caps.subgroup_arithmetic_raygen = true;
+    caps.subgroup_arithmetic_raygen = caps.subgroup_ballot_raygen = true;
     return caps;
 }
 

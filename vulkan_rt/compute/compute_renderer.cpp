@@ -71,23 +71,21 @@ class ComputeTracer : public Tracer {
     }
 
     void record_launch(VkCommandBuffer cmd, const BatchParams& batch,
-                       uint32_t width) const override {
-        dispatch(program_, cmd, batch, width);
+                       uint32_t invocations) const override {
+        dispatch(program_, cmd, batch, invocations);
     }
     void record_debug_launch(VkCommandBuffer cmd, const BatchParams& batch,
-                             uint32_t width) const override {
-        dispatch(*debug_program_, cmd, batch, width);
+                             uint32_t invocations) const override {
+        dispatch(*debug_program_, cmd, batch, invocations);
     }
 
   private:
     void dispatch(const ComputeProgram& program, VkCommandBuffer cmd, const BatchParams& batch,
-                  uint32_t width) const {
+                  uint32_t invocations) const {
         BatchParams push = batch;
         push.bvh_top_root = top_root_;
-        const uint32_t groups_x = (width + RENDER_GROUP_X - 1) / RENDER_GROUP_X;
-        const uint32_t rows = batch.row_end - batch.row_begin;
-        const uint32_t groups_y = (rows + RENDER_GROUP_Y - 1) / RENDER_GROUP_Y;
-        program.record_dispatch(cmd, &push, groups_x, groups_y, 1);
+        program.record_dispatch(cmd, &push,
+                                (invocations + RENDER_GROUP_SIZE - 1) / RENDER_GROUP_SIZE, 1, 1);
     }
 
     BvhBuffers bvh_;

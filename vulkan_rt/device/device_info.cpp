@@ -70,6 +70,7 @@ std::string compute_mode_missing(const DeviceCaps& caps) {
     if (!caps.float64) missing.push_back("shaderFloat64");
     if (!caps.scalar_layout) missing.push_back("scalarBlockLayout");
     if (!caps.subgroup_arithmetic) missing.push_back("subgroup arithmetic in compute shaders");
+    if (!caps.subgroup_ballot) missing.push_back("subgroup ballots in compute shaders");
     if (caps.max_storage_buffers < BINDING_COUNT)
         missing.push_back(fmt::format("{} storage buffers per stage", BINDING_COUNT));
     return join(missing);
@@ -93,6 +94,8 @@ std::string pipeline_mode_missing(const DeviceCaps& caps) {
         if (!caps.buffer_device_address) missing.push_back("bufferDeviceAddress");
         if (!caps.subgroup_arithmetic_raygen)
             missing.push_back("subgroup arithmetic in ray-generation shaders");
+        if (!caps.subgroup_ballot_raygen)
+            missing.push_back("subgroup ballots in ray-generation shaders");
     }
     const std::string compute = compute_mode_missing(caps);
     if (!compute.empty()) missing.push_back(compute);

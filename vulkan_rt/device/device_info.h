@@ -16,15 +16,21 @@ struct DeviceCaps {
     bool float64 = false;             // shaderFloat64: the film accumulators are double
     bool scalar_layout = false;       // scalarBlockLayout: buffers mirror the C++ structs
     bool subgroup_arithmetic = false; // in compute shaders: ray-counter reduction
+    bool subgroup_ballot = false;     // in compute shaders: work items taken together
     bool compute_queue = false;
     uint32_t max_storage_buffers = 0; // per shader stage
     std::vector<std::string> extensions;
-    // Pipeline mode: the features of its extensions, and the ray-counter reduction of
-    // shaders/accumulate.glsl in the ray-generation shader.
+    // Invocations the device keeps resident at once, where it says so (VK_NV_shader_sm_builtins:
+    // multiprocessors x warps per multiprocessor x 32); 0: unknown. Render launches need no more
+    // (shaders/render_items.glsl: each invocation takes work items until none is left).
+    uint64_t resident_invocations = 0;
+    // Pipeline mode: the features of its extensions, and the ray-counter reduction and item
+    // fetch of shaders/counters.glsl and render_items.glsl in the ray-generation shader.
     bool acceleration_structure = false; // VkPhysicalDeviceAccelerationStructureFeaturesKHR
     bool ray_tracing_pipeline = false;   // VkPhysicalDeviceRayTracingPipelineFeaturesKHR
     bool buffer_device_address = false;  // Vulkan 1.2: SBT, geometry and instance addresses
     bool subgroup_arithmetic_raygen = false;
+    bool subgroup_ballot_raygen = false;
     // VK_KHR_pipeline_executable_properties with its pipelineExecutableInfo feature: the
     // driver's statistics of compiled pipelines (`--pipeline-stats`).
     bool pipeline_executable_info = false;

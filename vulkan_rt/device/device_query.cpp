@@ -58,16 +58,27 @@ DeviceInfo query_device(VkPhysicalDevice device, uint32_t index) {
         VkPhysicalDeviceSubgroupProperties subgroup{};
         subgroup.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SUBGROUP_PROPERTIES;
         subgroup.pNext = &driver;
+        VkPhysicalDeviceShaderSMBuiltinsPropertiesNV sm{};
+        sm.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_SHADER_SM_BUILTINS_PROPERTIES_NV;
+        if (caps.has(VK_NV_SHADER_SM_BUILTINS_EXTENSION_NAME)) {
+            sm.pNext = subgroup.pNext;
+            subgroup.pNext = &sm;
+        }
         VkPhysicalDeviceProperties2 props2{};
         props2.sType = VK_STRUCTURE_TYPE_PHYSICAL_DEVICE_PROPERTIES_2;
         props2.pNext = &subgroup;
         vkGetPhysicalDeviceProperties2(device, &props2);
+        caps.resident_invocations = uint64_t(sm.shaderSMCount) * sm.shaderWarpsPerSM * 32;
         info.driver = fmt::format("{} {}", driver.driverName, driver.driverInfo);
         const bool arithmetic = subgroup.supportedOperations & VK_SUBGROUP_FEATURE_ARITHMETIC_BIT;
         caps.subgroup_arithmetic =
             arithmetic && (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT);
         caps.subgroup_arithmetic_raygen =
             arithmetic && (subgroup.supportedStages & VK_SHADER_STAGE_RAYGEN_BIT_KHR);
+        const bool ballot = subgroup.supportedOperations & VK_SUBGROUP_FEATURE_BALLOT_BIT;
+        caps.subgroup_ballot = ballot && (subgroup.supportedStages & VK_SHADER_STAGE_COMPUTE_BIT);
+        caps.subgroup_ballot_raygen =
+            ballot && (subgroup.supportedStages & VK_SHADER_STAGE_RAYGEN_BIT_KHR);
 
         // Extension feature structures may only be chained where the extension exists.
         VkPhysicalDeviceAccelerationStructureFeaturesKHR as{};

@@ -51,12 +51,12 @@ class PipelineTracer : public Tracer {
         if (debug_program_) debug_program_->bind(binding, buffer);
     }
     void record_launch(VkCommandBuffer cmd, const BatchParams& batch,
-                       uint32_t width) const override {
-        program_.record_trace(cmd, &batch, width, batch.row_end - batch.row_begin);
+                       uint32_t invocations) const override {
+        program_.record_trace(cmd, &batch, invocations, 1);
     }
     void record_debug_launch(VkCommandBuffer cmd, const BatchParams& batch,
-                             uint32_t width) const override {
-        debug_program_->record_trace(cmd, &batch, width, batch.row_end - batch.row_begin);
+                             uint32_t invocations) const override {
+        debug_program_->record_trace(cmd, &batch, invocations, 1);
     }
 
   private:

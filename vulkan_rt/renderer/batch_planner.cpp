@@ -5,9 +5,10 @@
 namespace tp {
 
 BatchPlanner::BatchPlanner(uint32_t width, uint32_t height, uint32_t spp, double target_seconds,
-                           uint64_t initial_work)
+                           uint64_t initial_work, uint64_t max_work)
     : width_(width), height_(height), spp_(spp), stop_(spp), target_(target_seconds),
-      work_(std::max<uint64_t>(initial_work, 1)) {}
+      max_work_(std::max<uint64_t>(max_work, 1)),
+      work_(std::clamp<uint64_t>(initial_work, 1, max_work_)) {}
 
 Batch BatchPlanner::next() const {
     const uint64_t pixels = uint64_t(width_) * height_;
@@ -27,7 +28,7 @@ void BatchPlanner::completed(const Batch& b, double seconds, bool cut_short) {
     const uint64_t done = uint64_t(width_) * (b.row_end - b.row_begin) * b.sample_count;
     const double wanted = seconds > 0 ? double(done) * target_ / seconds : double(work_) * 4.0;
     work_ = uint64_t(std::clamp(wanted, double(work_) / 4.0, double(work_) * 4.0));
-    work_ = std::max<uint64_t>(work_, 1);
+    work_ = std::clamp<uint64_t>(work_, 1, max_work_);
     pass_samples_ = b.sample_count;
     row_ = b.row_end;
     if (row_ >= height_) {

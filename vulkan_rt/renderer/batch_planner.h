@@ -3,7 +3,7 @@
 // stay responsive. A pass traces `samples` samples of every pixel, as one submission or as
 // bands of rows; the work of the next submission (pixels x samples) follows the throughput
 // measured on the previous ones, changing by at most 4x at a time. A device that had to cut a
-// batch short (lavapipe's per-invocation loop budget, shaders/accumulate.glsl) gets at most
+// batch short (lavapipe's per-invocation loop budget, shaders/render_items.glsl) gets at most
 // half as many samples per pixel in the batches after it.
 #pragma once
 
@@ -21,9 +21,9 @@ struct Batch {
 class BatchPlanner {
   public:
     // `initial_work`: pixel-samples of the first submission; a render of several ranges passes
-    // on what the previous range's planner learnt (work()).
+    // on what the previous range's planner learnt (work()). `max_work`: of any submission.
     BatchPlanner(uint32_t width, uint32_t height, uint32_t spp, double target_seconds,
-                 uint64_t initial_work = kInitialWork);
+                 uint64_t initial_work = kInitialWork, uint64_t max_work = kMaxWork);
 
     bool done() const { return samples_done_ >= stop_; }
     // Ends the render (for now) after `spp` samples per pixel: a checkpoint; at most the total.
@@ -39,13 +39,19 @@ class BatchPlanner {
     uint64_t work() const { return work_; } // pixel-samples planned per submission
     uint32_t max_samples() const { return max_samples_; }
 
-    static constexpr uint32_t kMaxSamplesPerBatch = 256;
+    // Samples per pixel in one pass at most: the resolve pass (shaders/resolve.comp) walks a
+    // pixel slot's samples of a batch in one loop, within lavapipe's loop budget.
+    static constexpr uint32_t kMaxSamplesPerBatch = 1024;
+    // Pixel-samples per submission at most, whatever the device: each is a work item whose
+    // estimate waits in the sample buffer (16 bytes) for the resolve pass (1 GiB at this bound).
+    static constexpr uint64_t kMaxWork = uint64_t(1) << 26;
     static constexpr uint64_t kInitialWork = 16384;
 
   private:
     uint32_t width_, height_, spp_;
     uint32_t stop_;
     double target_;
+    uint64_t max_work_;
     uint64_t work_;
     uint32_t max_samples_ = kMaxSamplesPerBatch;
     uint32_t samples_done_ = 0;

@@ -21,7 +21,7 @@ class VulkanContext;
 // Compute mode on `ctx`, over the BVH in `layout`, in the shape that the feature mask `features`
 // gives it (bvh_builder.h: one level without FEATURE_INSTANCING), with the traversal specialized
 // to that mask as the render's is. On lavapipe a traversal can be cut by the loop budget
-// (shaders/accumulate.glsl): such rays are retried alone, and those still cut are counted in
+// (shaders/render_items.glsl): such rays are retried alone, and those still cut are counted in
 // ClosestHits::truncated.
 ClosestHits closest_hits_compute(const VulkanContext& ctx, const FlatScene& scene,
                                  const std::vector<Ray>& rays, BvhLayout layout = BvhLayout::binary,

@@ -49,10 +49,10 @@ RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
     st.pipeline = accel.pipeline;
 
     BatchSession session(ctx, scene, mode.buffers, tracer, options.debug, options.sample_offset,
-                         options.sampler);
+                         options.sampler, options.gpu_invocations);
     const auto t0 = std::chrono::steady_clock::now();
     double snapshot_seconds = 0; // read-backs for checkpoints: not rendering time
-    uint64_t work = BatchPlanner::kInitialWork;
+    uint64_t work = session.initial_work();
     bool stopped = false;
     // One range, [sample_offset, sample_offset + spp), or those options.sample_source grants.
     while (!stopped) {
@@ -63,7 +63,8 @@ RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
             if (range.count == 0) break;
         }
         session.set_sample_offset(range.begin);
-        BatchPlanner planner(st.width, st.height, range.count, kTargetSubmitSeconds, work);
+        BatchPlanner planner(st.width, st.height, range.count, kTargetSubmitSeconds, work,
+                             session.max_work());
         planner.stop_at(options.next_stop(0, range.count));
         while (!planner.done()) {
             const Batch b = planner.next();
@@ -98,6 +99,7 @@ RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
     st.gpu_time_s = session.gpu_seconds();
     st.extra["submissions"] = std::to_string(session.submissions());
     st.extra["repeated_submissions"] = std::to_string(session.repeats());
+    st.extra["render_invocations"] = std::to_string(session.resident_invocations());
     result.film = session.read_back(st);
     const DebugRequest& d = options.debug;
     if (d.aov) result.debug.aovs = session.aovs();

@@ -28,15 +28,16 @@ class Tracer {
     virtual VkPipelineStageFlags shader_stage() const = 0;
     // Points slot `binding` (interface.h: scene, accumulator and counter slots) at `buffer`.
     virtual void bind(uint32_t binding, const Buffer& buffer) = 0;
-    // Records one invocation per pixel of rows [batch.row_begin, batch.row_end), all `width`
-    // columns, with `batch` as push constants.
+    // Records `invocations` render invocations (a one-dimensional launch) with `batch` as push
+    // constants. In the render pass they share the batch's work items (render_items.glsl); in
+    // the debug variant's other passes invocation i is pixel (i % width, row_begin + i / width).
     virtual void record_launch(VkCommandBuffer cmd, const BatchParams& batch,
-                               uint32_t width) const = 0;
+                               uint32_t invocations) const = 0;
     // The same with the debug variant of the shader (TP_DEBUG_SHADER: path logs, AOVs, debug
     // views; shaders/debug.glsl), which the tracer builds when the render's DebugRequest is
     // active. What it does is in the debug buffer's header (shared/path_log.h).
     virtual void record_debug_launch(VkCommandBuffer cmd, const BatchParams& batch,
-                                     uint32_t width) const = 0;
+                                     uint32_t invocations) const = 0;
 };
 
 // The SPIR-V of a debug variant: the embedded one, or the file TWINPATH_DEBUG_SPIRV names (a

@@ -62,7 +62,8 @@ void ProgressiveRenderer::restart(const Camera& camera) {
     });
     session_->clear();
     const uint32_t w = camera.width, h = camera.height;
-    planner_ = std::make_unique<BatchPlanner>(w, h, options_.max_spp, options_.target_seconds);
+    planner_ = std::make_unique<BatchPlanner>(w, h, options_.max_spp, options_.target_seconds,
+                                              session_->initial_work(), session_->max_work());
     fixed_done_ = 0;
     started_ = std::chrono::steady_clock::now();
 }
