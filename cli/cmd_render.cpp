@@ -18,6 +18,7 @@
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <atomic>
 #include <cmath>
 #include <filesystem>
 #include <optional>
@@ -75,6 +76,9 @@ std::vector<uint8_t> heat_map(const std::vector<float>& cost) {
 }
 
 int run_render(const RenderArgs& a) {
+    // First, before the scene loads: a signal from here until the first pass exits at once with
+    // its code (util/interrupt.h), where the default action would end the process without one.
+    install_interrupt_handlers();
     // With --time-limit and no --spp: until the time runs out.
     const Scene scene =
         load_scene_args(a, a.time_limit > 0 ? std::optional<uint32_t>(1u << 30) : std::nullopt);
@@ -122,9 +126,23 @@ int run_render(const RenderArgs& a) {
     check_output_paths(outputs);
 
     ProgressBar bar(fmt::format("render {}", a.backend));
-    install_interrupt_handlers();
     RenderOptions opt;
     opt.stop = &interrupt_flag();
+    // The line that says the render has begun (scripts and tests wait for it): from here on a
+    // first signal saves the passes done. Once, though each device's thread calls it.
+    std::atomic<bool> begun{false};
+    opt.on_first_pass = [&] {
+        if (begun.exchange(true)) return;
+        save_on_interrupt();
+        const std::string length = a.time_limit > 0 && !a.spp ? fmt::format("{} s", a.time_limit)
+                                   : a.time_limit > 0
+                                       ? fmt::format("{} spp or {} s", flat.spp, a.time_limit)
+                                       : fmt::format("{} spp", flat.spp);
+        fmt::print(stderr,
+                   "twinpath: rendering {}x{}, {}: a first SIGINT or SIGTERM saves the passes "
+                   "done, a second exits at once\n",
+                   flat.params.camera.width, flat.params.camera.height, length);
+    };
     opt.seed = a.seed;
     opt.sample_offset = a.sample_offset;
     opt.sampler = sampler_from_name(a.sampler);

@@ -78,6 +78,7 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
     const auto t0 = std::chrono::steady_clock::now();
     double snapshot_seconds = 0; // film copies for checkpoints: not rendering time
     uint32_t done = 0;
+    if (options.on_first_pass) options.on_first_pass();
     while (done < scene.spp) {
         // Samples [s0, s1) of the render are samples [K + s0, K + s1) of the sequence.
         const uint32_t K = options.sample_offset;

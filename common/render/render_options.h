@@ -46,6 +46,9 @@ struct RenderOptions {
     // pass in flight: every pixel then has the same number of samples, reported as stats.spp.
     const std::atomic<bool>* stop = nullptr;
     bool stop_requested() const { return stop && stop->load(); }
+    // Called once the setup (acceleration structures, device, pipelines) is done, as the first
+    // pass begins; with several devices, by each device's thread. May be empty.
+    std::function<void()> on_first_pass;
     // Called after every pass with the fraction of samples done; may be empty.
     std::function<void(double fraction)> progress;
     // Sample counts at which a snapshot is wanted: a benchmark ladder renders once and reads

@@ -1,24 +1,37 @@
 #include "util/interrupt.h"
 
 #include <csignal>
+#include <cstddef>
 #include <unistd.h>
 
 namespace tp {
 namespace {
 
 // Lock-free atomics only: the handler may touch nothing else (async-signal safety).
+std::atomic<bool> g_saving{false}; // save_on_interrupt() was called: the render has begun
 std::atomic<bool> g_stop{false};
 std::atomic<int> g_first{0};   // the first signal's number
 std::atomic<int> g_pending{0}; // a second signal's number, while an output is being written
 std::atomic<int> g_writing{0}; // open OutputWriteScopes
 
+// write() is async-signal safe; fmt and stdio are not.
+template <size_t N>
+void note(const char (&text)[N]) {
+    (void)!::write(STDERR_FILENO, text, N - 1);
+}
+
 void on_signal(int sig) {
     int none = 0;
     if (g_first.compare_exchange_strong(none, sig)) {
+        if (!g_saving.load()) {
+            note("twinpath: interrupted before rendering began: nothing to save\n");
+            _exit(128 + sig);
+        }
+        // The note first: whoever waits for it (a user, a script) sees it before anything the
+        // stop leads to, the outputs and the final "wrote the N of M spp".
+        note("\ntwinpath: interrupted: finishing the pass in flight to save it (a second signal "
+             "exits at once)\n");
         g_stop.store(true);
-        static const char kNote[] = "\ntwinpath: interrupted: finishing the pass in flight to save "
-                                    "it (a second signal exits at once)\n";
-        (void)!::write(STDERR_FILENO, kNote, sizeof kNote - 1); // write() is async-signal safe
         return;
     }
     if (g_writing.load() > 0) {
@@ -41,6 +54,10 @@ void install_interrupt_handlers() {
         return true;
     }();
     (void)installed;
+}
+
+void save_on_interrupt() {
+    g_saving.store(true);
 }
 
 const std::atomic<bool>& interrupt_flag() {

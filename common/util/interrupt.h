@@ -1,18 +1,25 @@
 // SIGINT and SIGTERM during a render (DESIGN.md, exit codes 130 and 143; README, "Interrupting a
-// render"): the first signal asks the render to stop after the pass in flight, so that what was
-// accumulated is written as a valid image; a second signal exits at once, with 128 + its
-// number. An output being written at that moment is finished first (OutputWriteScope), so no
-// PATH.partial is ever left behind.
+// render"). Until the first pass begins (save_on_interrupt), a signal exits at once with
+// 128 + its number: nothing has been rendered, so nothing is lost. From then on, the first
+// signal asks the render to stop after the pass in flight, so that what was accumulated is
+// written as a valid image; a second signal exits at once. An output being written at that
+// moment is finished first (OutputWriteScope), so no PATH.partial is ever left behind.
 #pragma once
 
 #include <atomic>
 
 namespace tp {
 
-// Installs the handlers for SIGINT and SIGTERM (once; later calls do nothing).
+// Installs the handlers for SIGINT and SIGTERM (once; later calls do nothing). Called before any
+// work that takes time, so that no signal finds the default action (death without a word).
 void install_interrupt_handlers();
 
-// Set by the first signal; a renderer polls it between passes (RenderOptions::stop).
+// From now on the first signal sets interrupt_flag() instead of exiting: the render has begun
+// and its passes are worth saving.
+void save_on_interrupt();
+
+// Set by the first signal after save_on_interrupt(); a renderer polls it between passes
+// (RenderOptions::stop).
 const std::atomic<bool>& interrupt_flag();
 
 // 128 + the first signal's number (130 for SIGINT, 143 for SIGTERM), or 0 when none came.

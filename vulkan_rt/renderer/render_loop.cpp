@@ -54,6 +54,7 @@ RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
     double snapshot_seconds = 0; // read-backs for checkpoints: not rendering time
     uint64_t work = session.initial_work();
     bool stopped = false;
+    if (options.on_first_pass) options.on_first_pass();
     // One range, [sample_offset, sample_offset + spp), or those options.sample_source grants.
     while (!stopped) {
         RenderOptions::SampleGrant range{options.sample_offset, scene.spp};
