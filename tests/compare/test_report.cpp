@@ -17,7 +17,9 @@ using namespace tp::test;
 
 namespace {
 
-// The DOM after the load event (--dump-dom), from a fresh profile each time.
+// The DOM after the load event (--dump-dom), from a fresh profile each time. `timeout 120` is a
+// guard against a hung browser, not a measure: the page loads in seconds even on a loaded
+// 2-core machine.
 std::string dump_dom(const std::string& html) {
     const std::string profile = temp_dir("chromium-profile");
     const ProcessResult r = run(fmt::format(

@@ -38,9 +38,11 @@ struct LocalCluster {
     tp::test::ProcessResult slurm(const std::string& command) const {
         return run("SLURM_CONF=" + shell_quote(conf) + " " + command);
     }
-    // Waits until no job is queued or running; false after two minutes.
+    // Waits until no job is queued or running; false after ten minutes, a guard against a hang
+    // and not a measure: the array and its merge job take seconds on an idle machine, and a
+    // loaded 2-core one may be many times slower (docs/testing.md).
     bool wait_idle() const {
-        for (int i = 0; i < 600; ++i) {
+        for (int i = 0; i < 3000; ++i) {
             const auto q = slurm("squeue -h -o %i");
             if (q.exit_code == 0 && q.out.find_first_not_of(" \n") == std::string::npos)
                 return true;

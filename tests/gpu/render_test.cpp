@@ -292,6 +292,9 @@ TEST_CASE("twinpath info --json lists the Vulkan devices and their modes", "[gpu
     CHECK(devices[0]["modes"][0] == "compute");
 }
 
+// The 1 s limit decides nothing by itself: however loaded the machine, the render makes at
+// least one pass (spp >= 1), and no device makes 10^8 spp of 16 x 16 in a second or ten; what is
+// checked is that it stopped on a pass boundary (samples = pixels x spp).
 TEST_CASE("a Vulkan render with a time limit stops after whole passes", "[gpu]") {
     const std::string dir = temp_dir("vk-time");
     const ProcessResult r = render("cornell", "vulkan", dir, "t",
