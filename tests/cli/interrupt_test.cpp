@@ -41,6 +41,8 @@ constexpr auto kHangGuard = std::chrono::seconds(120);
 // twinpath with `args`, its output into `log`; returns the process id.
 pid_t spawn(const std::vector<std::string>& args, const fs::path& log) {
     const pid_t pid = fork();
+    // A failed fork returns -1, and kill(-1, ...) would signal every process this user may.
+    REQUIRE(pid >= 0);
     if (pid == 0) {
         const int fd = ::open(log.c_str(), O_WRONLY | O_CREAT | O_TRUNC, 0644);
         dup2(fd, STDOUT_FILENO);
