@@ -4,7 +4,7 @@
 # for a new user, whose first `make test` may share two cores with a build or a browser.
 #
 #   scripts/loaded_suite.sh [--runs N] [--load build|stress|none] [--preset P]
-#                           [--timeout S] [--out DIR]
+#                           [--timeout S] [--out DIR] [--summary FILE]
 #
 #   --runs N      whole ctest runs, one after another (default 1)
 #   --load build  (default) a parallel build of this source tree beside the tests: a second
@@ -17,12 +17,15 @@
 #                 settings: 2 jobs)
 #   --timeout S   ctest's limit per test without one of its own (default 1500 s): a hang is
 #                 counted as a failure instead of stopping the script
-#   --out DIR     logs and the summary (default out/loaded-suite); the summary is printed too
+#   --out DIR     logs, the load's build tree (removed at the end) and, unless --summary
+#                 says otherwise, the summary (default out/loaded-suite, git-ignored)
+#   --summary FILE  where the summary goes (default DIR/summary.txt); it is printed too. The
+#                 record kept in the repository: --summary benchmarks/loaded-suite/summary.txt
 #
 # It configures and builds the tests first (as make test does, without installing packages),
 # then starts the load, then runs `ctest --preset P` N times. Each run's output is in
-# DIR/run-K.log; DIR/summary.txt holds the machine, the commit, one line per run and the
-# failures per test. Exit status 0 when every run passed.
+# DIR/run-K.log; the summary holds the machine, the commit, one line per run and the failures
+# per test. Exit status 0 when every run passed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
@@ -31,6 +34,7 @@ load=build
 preset=release
 timeout=1500
 out=out/loaded-suite
+summary=
 while [[ $# -gt 0 ]]; do
   case $1 in
     --runs) runs=${2:?--runs needs a number}; shift 2 ;;
@@ -38,7 +42,8 @@ while [[ $# -gt 0 ]]; do
     --preset) preset=${2:?--preset needs a name}; shift 2 ;;
     --timeout) timeout=${2:?--timeout needs seconds}; shift 2 ;;
     --out) out=${2:?--out needs a directory}; shift 2 ;;
-    -h | --help) sed -n '2,26p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
+    --summary) summary=${2:?--summary needs a file}; shift 2 ;;
+    -h | --help) sed -n '2,28p' "$0" | sed 's/^# \{0,1\}//'; exit 0 ;;
     *) echo "loaded_suite.sh: unknown argument '$1' (--help lists them)" >&2; exit 2 ;;
   esac
 done
@@ -57,8 +62,11 @@ esac
 
 build_dir=build
 [[ $preset == release ]] || build_dir=build-$preset
-mkdir -p "$out"
-summary=$out/summary.txt
+summary=${summary:-$out/summary.txt}
+mkdir -p "$out" "$(dirname "$summary")"
+# Read before the summary is rewritten: a summary kept in the repository is a tracked file, and
+# rewriting it would mark the commit under test as modified.
+commit="$(git rev-parse --short HEAD)$(git diff --quiet HEAD -- . 2>/dev/null || echo ' (with uncommitted changes)')"
 say() { echo "$*" | tee -a "$summary"; }
 : >"$summary"
 
@@ -67,40 +75,61 @@ cmake --preset "$preset" -DTWINPATH_TESTS=ON >"$out/build.log" 2>&1 &&
   cmake --build --preset "$preset" >>"$out/build.log" 2>&1 ||
   { echo "loaded_suite.sh: the build failed; see $out/build.log" >&2; exit 1; }
 
-# The load runs in a session of its own, so that ending it ends every compiler it started.
+# The load runs in a session of its own, so that ending it ends every compiler it started. A
+# watchdog in that session ends it too when this script is gone without running its EXIT trap
+# (killed with SIGKILL), so that no load outlives the check.
 load_pid=
+load_dir=
+start_load() { # COMMAND ARGS...; its output appended to $out/load.log
+  setsid bash -c '
+    parent=$1; shift
+    "$@" &
+    while kill -0 "$parent" 2>/dev/null; do sleep 5; done
+    kill -TERM -- "-$$"' watchdog "$$" "$@" >>"$out/load.log" 2>&1 &
+  load_pid=$!
+}
 stop_load() {
-  [[ -n $load_pid ]] && kill -TERM -- "-$load_pid" 2>/dev/null && wait "$load_pid" 2>/dev/null
+  if [[ -n $load_pid ]]; then
+    # Each may fail (the group already gone, the watchdog ended by the signal): set -e must not
+    # end this trap before the tree is removed.
+    kill -TERM -- "-$load_pid" 2>/dev/null || true
+    wait "$load_pid" 2>/dev/null || true
+    # The compilers it started end on their own time; the tree is removed after them (10 s at
+    # most, then KILL).
+    for _ in $(seq 50); do kill -0 -- "-$load_pid" 2>/dev/null || break; sleep 0.2; done
+    kill -KILL -- "-$load_pid" 2>/dev/null || true
+  fi
   load_pid=
+  # The load's build tree is as large as the tests' one: not left behind.
+  [[ -n $load_dir ]] && rm -rf "$load_dir" 2>/dev/null
+  return 0
 }
 trap stop_load EXIT
 trap 'exit 130' INT TERM
 cores=$(nproc)
+rm -f "$out/load-passes"
 case $load in
   build)
     # Configured once here, out of the way of the tests' build; ccache off, so that every
-    # pass compiles for real.
+    # pass compiles for real. load-pass.log holds the last pass's output.
     load_dir=$(realpath -m "$out/load-build")
     env -u CMAKE_CXX_COMPILER_LAUNCHER -u CMAKE_C_COMPILER_LAUNCHER \
       cmake --preset "$preset" -B "$load_dir" -DTWINPATH_TESTS=ON >"$out/load.log" 2>&1
-    setsid bash -c '
+    start_load bash -c '
       passes=0
       while :; do
-        CCACHE_DISABLE=1 cmake --build "$1" --clean-first -j "$2" >>"$3" 2>&1 || true
+        CCACHE_DISABLE=1 cmake --build "$1" --clean-first -j "$2" >"$3" 2>&1 || true
         passes=$((passes + 1)); echo "$passes" >"$4"
-      done' load "$load_dir" "$cores" "$out/load.log" "$out/load-passes" &
-    load_pid=$!
+      done' load "$load_dir" "$cores" "$out/load-pass.log" "$out/load-passes"
     load_text="a parallel build beside it (cmake --build --clean-first -j$cores, ccache off, in a loop)" ;;
   stress)
-    setsid stress-ng --cpu "$cores" --quiet >"$out/load.log" 2>&1 &
-    load_pid=$!
+    start_load stress-ng --cpu "$cores" --quiet
     load_text="stress-ng --cpu $cores" ;;
   none) load_text="none" ;;
 esac
-rm -f "$out/load-passes"
 
 say "twinpath loaded suite: $runs run(s) of ctest --preset $preset (--timeout $timeout)"
-say "commit:  $(git rev-parse --short HEAD)$(git diff --quiet HEAD -- . 2>/dev/null || echo ' (with uncommitted changes)')"
+say "commit:  $commit"
 say "machine: $cores cores ($(grep -m1 'model name' /proc/cpuinfo | cut -d: -f2 | sed 's/^ *//')), $(awk '/MemTotal/ {printf "%.0f GiB", $2 / 1048576}' /proc/meminfo), $(. /etc/os-release && echo "$PRETTY_NAME")"
 say "load:    $load_text"
 say "started: $(date -u '+%Y-%m-%d %H:%M UTC')"
