@@ -116,6 +116,7 @@ class Reader {
 };
 
 constexpr double kMax = 3.4e38; // float's range: numbers beyond are errors (scene-format.md)
+constexpr uint32_t kMaxZeroAccessor = 1u << 20;
 
 // The elements of the top-level array `key`, each an object.
 const json& top_array(const Reader& r, const json& root, const char* key) {
@@ -440,6 +441,13 @@ void read_accessors(const Reader& r, const json& root, GltfDocument& d) {
                               .c_str());
         } else if (a.byte_offset != 0) {
             r.fail(Reader::at(f, "byteOffset"), "is given without a bufferView");
+        } else if (a.count > kMaxZeroAccessor) {
+            // Without a buffer view the elements are zeros that the file does not hold: a few
+            // bytes of JSON must not make the loader allocate gigabytes.
+            r.fail(Reader::at(f, "count"),
+                   fmt::format("{} elements without a bufferView (zeros, sparse or not): twinpath "
+                               "reads at most {}",
+                               a.count, kMaxZeroAccessor));
         }
         if (const json* s = Reader::find(j, "sparse")) {
             const std::string sf = Reader::at(f, "sparse");

@@ -15,7 +15,7 @@ namespace tp {
 constexpr float kMaxGltfPhongExponent = 1e6f;
 
 // The modified-Phong exponent that stands for glTF's roughness r. glTF's microfacet
-// distribution has width alpha = r^2 (glTF 2.0, Appendix B.3.2). Walter et al. 2007, section
+// distribution has width alpha = r^2 (glTF 2.0, Appendix B.3). Walter et al. 2007, section
 // 5.2, match a Phong (half-vector) distribution of exponent a_p = 2 / alpha^2 - 2 to a
 // microfacet distribution of width alpha. twinpath's lobe is Lafortune's, around the mirror
 // direction: near the peak the angle to the mirror direction is twice the half-vector's angle,

@@ -83,7 +83,24 @@ const char* const kTokens[] = {"1e30",
                                "\"rotate\": ",
                                "\"scale\": ",
                                "\"axis\": [0, 0, 0]",
-                               "\"objects\": []"};
+                               "\"objects\": []",
+                               "\"bufferView\": 0",
+                               "\"byteOffset\": ",
+                               "\"byteStride\": ",
+                               "\"count\": ",
+                               "\"componentType\": 5121",
+                               "\"normalized\": true",
+                               "\"mode\": 5",
+                               "\"children\": [0]",
+                               "\"matrix\": [0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 0, 1]",
+                               "\"rotation\": [0, 0, 0, 1]",
+                               "\"scale\": [0, 0, 0]",
+                               "\"texCoord\": 1",
+                               "\"sparse\": {\"count\": 1, \"indices\": {\"bufferView\": 0, "
+                               "\"componentType\": 5121}, \"values\": {\"bufferView\": 0}}",
+                               "data:application/octet-stream;base64,",
+                               "NaN",
+                               "glTF"};
 
 Bytes mutate(const std::vector<Bytes>& corpus, std::mt19937_64& rng) {
     auto pick = [&](size_t n) { return n == 0 ? size_t(0) : size_t(rng() % n); };

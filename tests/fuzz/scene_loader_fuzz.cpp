@@ -37,9 +37,13 @@ extern "C" int LLVMFuzzerTestOneInput(const uint8_t* data, size_t size) {
     const char kind = char(data[0]);
     const fs::path& dir = work_dir();
     // Each input alone: no file of an earlier one for this one to name.
-    for (const char* f : {"in.obj", "in.mtl", "in.json", "uses_mtl.obj"}) fs::remove(dir / f);
+    for (const char* f : {"in.obj", "in.mtl", "in.json", "uses_mtl.obj", "in.gltf", "in.glb"})
+        fs::remove(dir / f);
     fs::path scene;
-    if (kind == 'o') {
+    if (kind == 'g' || kind == 'b') { // glTF: the JSON form or the binary container
+        scene = dir / (kind == 'g' ? "in.gltf" : "in.glb");
+        write(scene, data + 1, size - 1);
+    } else if (kind == 'o') {
         scene = dir / "in.obj";
         write(scene, data + 1, size - 1);
     } else if (kind == 'm') {
