@@ -8,10 +8,18 @@ camera at (278, 273, -800) looking down +z, focal length 35 mm on a 25 mm film, 
 field of view is 2 atan(12.5 / 35) = 39.3077 degrees). The measured spectral reflectances are
 represented by RGB values (white 0.725/0.71/0.68, red 0.63/0.065/0.05, green 0.14/0.45/0.091)
 and the light by radiance (17, 12, 4): the values commonly used for RGB renderings of this box.
+
+gltf_materials: a glTF 2.0 example (docs/scene-format.md, "glTF 2.0"): glTF's metallic-roughness
+materials on one sphere mesh stored once, a checkered floor texture embedded as a PNG, a camera
+node, a KHR_lights_punctual sun and an emissive panel; everything in one .gltf file.
 """
+import base64
 import json
+import math
 import os
+import struct
 import sys
+import zlib
 
 FLOOR = [[552.8, 0, 0], [0, 0, 0], [0, 0, 559.2], [549.6, 0, 559.2]]
 CEILING = [[556.0, 548.8, 0], [556.0, 548.8, 559.2], [0, 548.8, 559.2], [0, 548.8, 0]]
@@ -160,6 +168,156 @@ def furnace(rho=0.8):
     }
 
 
+def png_stored(width, height, rgb_rows):
+    """An 8-bit RGB PNG whose zlib stream uses stored (uncompressed) deflate blocks, so that its
+    bytes do not depend on the zlib version."""
+    raw = b"".join(b"\0" + bytes(row) for row in rgb_rows)
+    blocks = b""
+    for i in range(0, len(raw), 65535):
+        part = raw[i:i + 65535]
+        final = 1 if i + 65535 >= len(raw) else 0
+        blocks += struct.pack("<BHH", final, len(part), 0xFFFF ^ len(part)) + part
+    stream = b"\x78\x01" + blocks + struct.pack(">I", zlib.adler32(raw))
+
+    def chunk(kind, data):
+        return (struct.pack(">I", len(data)) + kind + data +
+                struct.pack(">I", zlib.crc32(kind + data)))
+    header = struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)
+    return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", stream) +
+            chunk(b"IEND", b""))
+
+
+def uv_sphere(segments=32, rings=16):
+    """Unit sphere: positions, normals (the same vectors) and counter-clockwise triangles seen
+    from outside. Coordinates are rounded to 6 decimals so that the file does not depend on the
+    last bit of the C library's sin and cos."""
+    points, tris = [], []
+    for r in range(rings + 1):
+        theta = math.pi * r / rings
+        for s in range(segments + 1):
+            phi = 2 * math.pi * s / segments
+            points.append([round(math.sin(theta) * math.sin(phi), 6), round(math.cos(theta), 6),
+                           round(math.sin(theta) * math.cos(phi), 6)])
+    for r in range(rings):
+        for s in range(segments):
+            a, b = r * (segments + 1) + s, (r + 1) * (segments + 1) + s
+            if r > 0:
+                tris.append([a, b, a + 1])
+            if r < rings - 1:
+                tris.append([a + 1, b, b + 1])
+    return points, tris
+
+
+def turn_minus_z_to(d):
+    """The unit quaternion [x, y, z, w] of the shortest rotation that turns -z (where glTF
+    cameras look and lights shine) to the direction d, rounded to 9 decimals."""
+    n = math.sqrt(sum(c * c for c in d))
+    d = [c / n for c in d]
+    q = [d[1], -d[0], 0.0, 1.0 - d[2]]  # (cross(-z, d), 1 + dot(-z, d))
+    n = math.sqrt(sum(c * c for c in q))
+    return [round(c / n, 9) + 0.0 for c in q]
+
+
+def gltf_materials():
+    buffer = bytearray()
+    views, accessors = [], []
+
+    def add(data, kind, component, count, extra=None):
+        while len(buffer) % 4:
+            buffer.append(0)
+        views.append({"buffer": 0, "byteOffset": len(buffer), "byteLength": len(data)})
+        buffer.extend(data)
+        accessor = {"bufferView": len(views) - 1, "componentType": component, "count": count,
+                    "type": kind}
+        accessor.update(extra or {})
+        accessors.append(accessor)
+        return len(accessors) - 1
+
+    def vec3s(points):
+        lo = [min(p[k] for p in points) for k in range(3)]
+        hi = [max(p[k] for p in points) for k in range(3)]
+        return add(b"".join(struct.pack("<3f", *p) for p in points), "VEC3", 5126, len(points),
+                   {"min": lo, "max": hi})
+
+    def indices(tris):
+        flat = [i for t in tris for i in t]
+        return add(struct.pack(f"<{len(flat)}H", *flat), "SCALAR", 5123, len(flat))
+
+    points, tris = uv_sphere()
+    sphere = {"POSITION": vec3s(points), "NORMAL": vec3s(points)}
+    sphere_indices = indices(tris)
+    quad = [[-1, 0, -1], [-1, 0, 1], [1, 0, 1], [1, 0, -1]]  # facing +y
+    quad_attrs = {"POSITION": vec3s(quad),
+                  "TEXCOORD_0": add(struct.pack("<8f", 0, 0, 0, 4, 4, 4, 4, 0), "VEC2", 5126, 4)}
+    quad_indices = indices([[0, 1, 2], [0, 2, 3]])
+    checks = [[(200 if (x // 8 + y // 8) % 2 == 0 else 60) for x in range(64) for _ in range(3)]
+              for y in range(64)]
+    png = png_stored(64, 64, checks)
+
+    materials = [
+        {"name": "floor", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0},
+                                                   "metallicFactor": 0.0, "roughnessFactor": 1.0}},
+        {"name": "panel", "emissiveFactor": [1.0, 0.9, 0.8],
+         "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 6.0}},
+         "pbrMetallicRoughness": {"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0.0}},
+        {"name": "glass", "pbrMetallicRoughness": {"metallicFactor": 0.0, "roughnessFactor": 0.0},
+         "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0},
+                        "KHR_materials_ior": {"ior": 1.5}}},
+    ]
+    meshes = [{"name": "floor", "primitives": [{"attributes": quad_attrs,
+                                                "indices": quad_indices, "material": 0}]},
+              {"name": "panel", "primitives": [{"attributes": {"POSITION": quad_attrs["POSITION"]},
+                                                "indices": quad_indices, "material": 1}]},
+              {"name": "glass", "primitives": [{"attributes": sphere, "indices": sphere_indices,
+                                                "material": 2}]}]
+    nodes = [{"name": "floor", "mesh": 0, "scale": [4, 1, 4]},
+             # The panel faces down: turned 180 degrees about x.
+             {"name": "panel", "mesh": 1, "translation": [0, 3, 0.5], "rotation": [1, 0, 0, 0],
+              "scale": [1.5, 1, 0.5]},
+             {"name": "glass", "mesh": 2, "translation": [1.5, 0.3, 1.6], "scale": [0.3] * 3}]
+    # Two rows of spheres: plastic (metallic 0) and gold-coloured metal (metallic 1), roughness
+    # 0 to 1 from left to right. Each material needs its own glTF mesh; they all name the same
+    # accessors, and twinpath stores the sphere once.
+    for row, (metallic, color, z) in enumerate([(0.0, [0.8, 0.1, 0.05, 1], 0.5),
+                                                (1.0, [1.0, 0.78, 0.34, 1], -0.7)]):
+        for k, roughness in enumerate([0.0, 0.25, 0.5, 0.75, 1.0]):
+            materials.append({"name": f"{'metal' if metallic else 'plastic'}_{roughness}",
+                              "pbrMetallicRoughness": {"baseColorFactor": color,
+                                                       "metallicFactor": metallic,
+                                                       "roughnessFactor": roughness}})
+            meshes.append({"name": materials[-1]["name"], "primitives": [{
+                "attributes": sphere, "indices": sphere_indices, "material": len(materials) - 1}]})
+            nodes.append({"name": materials[-1]["name"], "mesh": len(meshes) - 1,
+                          "translation": [-2.0 + k, 0.4, z], "scale": [0.4] * 3})
+    # The camera at (0, 3.4, 5.5) looks at (0, 0.2, -0.2); the sun shines from (3, 5, 2).
+    nodes.append({"name": "camera", "camera": 0, "translation": [0, 3.4, 5.5],
+                  "rotation": turn_minus_z_to([0, -3.2, -5.7])})
+    nodes.append({"name": "sun", "rotation": turn_minus_z_to([-3, -5, -2]),
+                  "extensions": {"KHR_lights_punctual": {"light": 0}}})
+    return {
+        "asset": {"version": "2.0", "generator": "twinpath scenes/generate_scenes.py"},
+        "extensionsUsed": ["KHR_lights_punctual", "KHR_materials_emissive_strength",
+                           "KHR_materials_ior", "KHR_materials_transmission"],
+        "extensions": {"KHR_lights_punctual": {"lights": [
+            {"name": "sun", "type": "directional", "color": [1.0, 0.95, 0.85], "intensity": 1.5}]}},
+        "scene": 0,
+        "scenes": [{"nodes": list(range(len(nodes)))}],
+        "nodes": nodes,
+        "cameras": [{"type": "perspective",
+                     "perspective": {"yfov": 0.6, "aspectRatio": 1.5, "znear": 0.1}}],
+        "meshes": meshes,
+        "materials": materials,
+        "textures": [{"source": 0, "sampler": 0}],
+        "samplers": [{"magFilter": 9729, "minFilter": 9987, "wrapS": 10497, "wrapT": 10497}],
+        "images": [{"uri": "data:image/png;base64," + base64.b64encode(png).decode()}],
+        "accessors": accessors,
+        "bufferViews": views,
+        "buffers": [{"byteLength": len(buffer),
+                     "uri": "data:application/octet-stream;base64," +
+                            base64.b64encode(bytes(buffer)).decode()}],
+    }
+
+
 SCENES = {"cornell": cornell, "cornell_glossy": cornell_glossy,
           "cornell_spheres": cornell_spheres, "spheres": spheres, "furnace": furnace}
 
@@ -176,10 +334,16 @@ def encode(value, indent=0):
     return json.dumps(value)
 
 
+GLTF_SCENES = {"gltf_materials": gltf_materials}
+
+
 def main():
     out = sys.argv[1] if len(sys.argv) > 1 else os.path.dirname(os.path.abspath(__file__))
     for name, make in SCENES.items():
         with open(os.path.join(out, name + ".json"), "w") as f:
+            f.write(encode(make()) + "\n")
+    for name, make in GLTF_SCENES.items():
+        with open(os.path.join(out, name + ".gltf"), "w") as f:
             f.write(encode(make()) + "\n")
 
 

@@ -1,6 +1,6 @@
-// The bundled scenes: the committed scenes/*.json are exactly what scenes/generate_scenes.py
-// writes (the generator is the source of truth), and each loads, flattens and renders a few
-// samples without a NaN.
+// The bundled scenes: the committed scenes/*.json and *.gltf are exactly what
+// scenes/generate_scenes.py writes (the generator is the source of truth), and each loads,
+// flattens and renders a few samples without a NaN.
 #include "cpu_ref/cpu_renderer.h"
 #include "scene/flatten.h"
 #include "scene/load.h"
@@ -44,7 +44,8 @@ TEST_CASE("the bundled scene files are what scenes/generate_scenes.py writes",
     }
     // And no committed scene that the generator no longer writes.
     size_t committed = 0;
-    for (const auto& e : fs::directory_iterator(src)) committed += e.path().extension() == ".json";
+    for (const auto& e : fs::directory_iterator(src))
+        committed += e.path().extension() == ".json" || e.path().extension() == ".gltf";
     CHECK(generated == committed);
     CHECK(generated >= 4);
     fs::remove_all(dir);
@@ -53,7 +54,7 @@ TEST_CASE("the bundled scene files are what scenes/generate_scenes.py writes",
 TEST_CASE("every bundled scene loads and flattens and renders without NaN",
           "[integration][scenes]") {
     for (const char* name :
-         {"cornell", "cornell_glossy", "cornell_spheres", "spheres", "furnace"}) {
+         {"cornell", "cornell_glossy", "cornell_spheres", "spheres", "furnace", "gltf_materials"}) {
         DYNAMIC_SECTION(name) {
             std::vector<std::string> warnings;
             tp::Scene scene = tp::load_scene(name, warnings);
