@@ -15,6 +15,7 @@
 #include <cmath>
 #include <limits>
 #include <map>
+#include <utility>
 
 namespace tp {
 
@@ -251,6 +252,11 @@ FlatScene flatten(const Scene& input) {
         if (is_black(m.ke)) continue;
         const MeshInfo& mesh = f.meshes[inst.mesh];
         inst.light_offset = uint32_t(f.lights.size());
+        // The front face is the mesh's counter-clockwise side, carried to the world by the
+        // normal transform M^-T (surface.h), whose sign does not follow det M. A mirroring
+        // transform (det M < 0) makes the world-space winding clockwise, so the light's vertices
+        // are stored in reverse order: its normal, formed from them, is then the front's too.
+        const bool mirrored = glm::determinant(glm::dmat3(scene.objects[i].transform)) < 0.0;
         for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
             const uvec3 tri = f.triangles[mesh.first_triangle + t];
             Light l{};
@@ -258,6 +264,7 @@ FlatScene flatten(const Scene& input) {
             l.p0 = instance_point_to_world(inst, f.positions[mesh.first_vertex + tri.x]);
             l.p1 = instance_point_to_world(inst, f.positions[mesh.first_vertex + tri.y]);
             l.p2 = instance_point_to_world(inst, f.positions[mesh.first_vertex + tri.z]);
+            if (mirrored) std::swap(l.p1, l.p2);
             l.area = 0.5f * glm::length(glm::cross(l.p1 - l.p0, l.p2 - l.p0));
             l.normal = triangle_light_normal(l.p0, l.p1, l.p2);
             l.instance = i;

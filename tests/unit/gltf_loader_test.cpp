@@ -7,6 +7,7 @@
 #include "scene/features.h"
 #include "scene/flatten.h"
 #include "scene/load.h"
+#include "shared/surface.h"
 #include "support/cornell_files.h"
 #include "support/gltf_builder.h"
 #include "support/test_paths.h"
@@ -384,4 +385,37 @@ TEST_CASE("glTF: the Cornell box flattens exactly as its OBJ twin", "[unit][gltf
         CHECK(std::memcmp(&a.params, &b.params, sizeof a.params) == 0);
         CHECK(tp::analyze_features(a).mask == tp::analyze_features(b).mask);
     }
+}
+
+TEST_CASE("a mirrored emitter's light faces where its surface emits", "[unit][gltf]") {
+    // glTF (section 3.7.2.1) and twinpath both keep a triangle's front on its counter-clockwise
+    // side in the mesh's own space; a node with a negative determinant mirrors it. Emission
+    // leaves the surface's front, whose world normal is M^-T times the object normal
+    // (surface.h); next-event estimation uses the light's normal, formed from its world
+    // vertices: the two must agree, or a mirrored lamp lights the wrong side by one estimator.
+    GltfBuilder g = cube_builder();
+    g.add("materials", {{"emissiveFactor", {1, 1, 1}}});
+    g.doc["meshes"][0]["primitives"][0]["material"] = 0;
+    g.add("nodes", {{"mesh", 0}, {"scale", {-1, 1, 1}}, {"translation", {-3, 0, 0}}});
+    g.add("nodes", {{"mesh", 0}, {"scale", {1, -2, 1}}, {"rotation", {0, 0.6, 0, 0.8}}});
+    g.add("nodes", {{"mesh", 0}, {"translation", {3, 0, 0}}});
+    g.scene({0, 1, 2});
+    const std::string dir = tp::test::temp_dir("gltf-mirrored");
+    const tp::FlatScene f = tp::flatten(load(g.write_glb(dir, "mirrored")).scene);
+    size_t checked = 0;
+    for (const tp::Light& l : f.lights) {
+        if (l.type != tp::LIGHT_TRIANGLE) continue;
+        const tp::Instance& inst = f.instances[l.instance];
+        const tp::MeshInfo& mesh = f.meshes[inst.mesh];
+        const tp::uvec3 t = f.triangles[mesh.first_triangle + l.primitive];
+        const tp::vec3 v0 = f.positions[mesh.first_vertex + t.x],
+                       v1 = f.positions[mesh.first_vertex + t.y],
+                       v2 = f.positions[mesh.first_vertex + t.z];
+        const tp::vec3 front =
+            glm::normalize(tp::instance_normal_to_world(inst, glm::cross(v1 - v0, v2 - v0)));
+        CAPTURE(l.instance, l.primitive);
+        CHECK(glm::dot(l.normal, front) == Approx(1.0f).margin(1e-5));
+        ++checked;
+    }
+    CHECK(checked == 3 * 12);
 }
