@@ -52,16 +52,14 @@ std::optional<Scene> load_bench_scene(const std::string& name, const std::string
         s.path = name;
         return s;
     }
-    const bool bundled = name.find('/') == std::string::npos &&
-                         fs::exists(fs::path(bundled_scenes_dir()) / (name + ".json"));
-    if (fs::is_regular_file(name) || bundled) {
+    if (fs::is_regular_file(name) || find_bundled_scene(name)) {
         Scene s = load_scene(name, warnings);
         for (const std::string& w : warnings) fmt::print(stderr, "twinpath: warning: {}\n", w);
         return s;
     }
-    input_error(
-        "--scenes: '{}' is neither a benchmark scene ({}) nor a bundled scene or .json/.obj file",
-        name, catalogue_names());
+    input_error("--scenes: '{}' is neither a benchmark scene ({}) nor a bundled scene or "
+                ".json/.obj/.gltf/.glb file",
+                name, catalogue_names());
 }
 
 } // namespace tp::bench

@@ -29,15 +29,20 @@ std::string bundled_scenes_dir() {
     return TWINPATH_SOURCE_SCENES_DIR;
 }
 
+std::optional<std::string> find_bundled_scene(const std::string& name) {
+    if (name.empty() || name.find('/') != std::string::npos) return std::nullopt;
+    for (const char* ext : {".json", ".gltf", ".glb"}) {
+        const fs::path bundled = fs::path(bundled_scenes_dir()) / (name + ext);
+        if (fs::exists(bundled)) return bundled.string();
+    }
+    return std::nullopt;
+}
+
 std::string resolve_scene_path(const std::string& arg) {
     std::error_code ec;
     if (fs::is_directory(arg, ec)) input_error("{}: is a directory, not a scene file", arg);
     if (fs::exists(arg)) return arg;
-    if (arg.find('/') == std::string::npos)
-        for (const char* ext : {".json", ".gltf", ".glb"}) {
-            const fs::path bundled = fs::path(bundled_scenes_dir()) / (arg + ext);
-            if (fs::exists(bundled)) return bundled.string();
-        }
+    if (const std::optional<std::string> bundled = find_bundled_scene(arg)) return *bundled;
     input_error("{}: no such scene file or bundled scene (bundled scenes are in {})", arg,
                 bundled_scenes_dir());
 }

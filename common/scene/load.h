@@ -16,6 +16,10 @@ namespace tp {
 // TWINPATH_SCENES overrides).
 std::string resolve_scene_path(const std::string& path_or_name);
 
+// The file of the bundled scene `name` (scenes/NAME.json, .gltf or .glb, in that order), or
+// nothing when `name` is a path or no bundled scene has that name.
+std::optional<std::string> find_bundled_scene(const std::string& name);
+
 struct LoadOptions {
     std::optional<uint32_t> camera; // a glTF file's cameras[N] (--camera N); an error otherwise
 };

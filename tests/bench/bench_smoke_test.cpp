@@ -299,6 +299,22 @@ TEST_CASE("bench reuses the cached reference and renders it again when the scene
     CHECK(references() == 2);
 }
 
+TEST_CASE("bench finds a bundled glTF scene by its name") {
+    const std::string dir = tp::test::temp_dir("bench-gltf");
+    const auto p =
+        bench("--backends cpu --scenes gltf_materials" + dir_args(dir + "/out", dir + "/cache"));
+    INFO(p.out);
+    REQUIRE(p.exit_code == 0);
+    const json r = read_json(dir + "/out/bench.json");
+    REQUIRE(r["scenes"].size() == 1);
+    CHECK(r["scenes"][0]["name"] == "gltf_materials");
+    // scenes/generate_scenes.py: 11 spheres of 32 x 16 quads less the poles' 2 x 32 triangles,
+    // the floor and the panel of 2 triangles each.
+    CHECK(r["scenes"][0]["triangles"] == 11 * (2 * 32 * 16 - 2 * 32) + 2 + 2);
+    CHECK(r["scenes"][0]["ladder"].size() == 1);
+    CHECK(r["skipped"].empty());
+}
+
 TEST_CASE("bench says which shared asset is missing when --assets is empty") {
     const std::string dir = tp::test::temp_dir("bench-assets");
     const std::string empty = dir + "/empty-assets";

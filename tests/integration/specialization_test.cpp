@@ -16,7 +16,8 @@ namespace {} // namespace
 
 TEST_CASE("CPU: the specialized path loop agrees with the all-features loop on every scene",
           "[features]") {
-    for (const char* scene : {"cornell", "cornell_glossy", "spheres", "furnace"}) {
+    for (const char* scene :
+         {"cornell", "cornell_glossy", "spheres", "furnace", "gltf_materials"}) {
         SECTION(scene) {
             const std::string dir = temp_dir(std::string("spec-cpu-") + scene);
             const auto render = [&](const std::string& name, const char* features, int seed) {

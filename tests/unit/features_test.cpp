@@ -1,6 +1,6 @@
-// Scene feature analysis (scene/features.h) on every bundled scene, against what reading the
-// scene files says they use; and the feature-restricted dispatch of shared/features.h, which
-// must give the unrestricted result for every input its mask admits.
+// Scene feature analysis (scene/features.h) on every bundled scene (JSON and glTF), against
+// what reading the scene files says they use; and the feature-restricted dispatch of
+// shared/features.h, which must give the unrestricted result for every input its mask admits.
 #include "scene/features.h"
 #include "scene/load.h"
 #include "shared/brdf.h"
@@ -33,6 +33,10 @@ TEST_CASE("every bundled scene has the features its file describes", "[features]
     //  spheres: floor with map_Kd "checker"; mirror, glass (dielectric) and a Phong ball with Ks
     //           0.5 as three instances of "ball"; a point and a directional light; a constant
     //           environment; nothing emissive.
+    // Read from scenes/gltf_materials.gltf (docs/scene-format.md's rule): a base colour texture
+    //  on the floor; plastic (F0 0.04) and metal at roughness > 0 are Phong with Ks > 0, metal
+    //  at roughness 0 a mirror, transmission a dielectric; an emissive panel and a directional
+    //  KHR_lights_punctual sun; 11 spheres naming one mesh's accessors.
     struct Case {
         const char* name;
         uint32_t mask;
@@ -47,10 +51,14 @@ TEST_CASE("every bundled scene has the features its file describes", "[features]
         {"spheres", FEATURE_TEXTURES | FEATURE_PHONG_SPECULAR | FEATURE_MIRROR |
                         FEATURE_DIELECTRIC | FEATURE_POINT_LIGHTS | FEATURE_DIRECTIONAL_LIGHTS |
                         FEATURE_ENV_CONSTANT | FEATURE_INSTANCING},
+        {"gltf_materials", FEATURE_TEXTURES | FEATURE_PHONG_SPECULAR | FEATURE_MIRROR |
+                               FEATURE_DIELECTRIC | FEATURE_EMISSIVE_TRIANGLES |
+                               FEATURE_DIRECTIONAL_LIGHTS | FEATURE_INSTANCING},
     };
     size_t bundled = 0;
     for (const auto& e : fs::directory_iterator(tp::test::scenes_dir()))
-        bundled += e.path().extension() == ".json";
+        bundled += e.path().extension() == ".json" || e.path().extension() == ".gltf" ||
+                   e.path().extension() == ".glb";
     CHECK(bundled == std::size(cases)); // a new bundled scene needs its row here
 
     for (const Case& c : cases) {
