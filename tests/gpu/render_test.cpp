@@ -245,7 +245,7 @@ TEST_CASE("pipeline mode agrees with compute mode and the CPU where the device h
         return;
     }
     for (const char* scene :
-         {"cornell", "cornell_glossy", "cornell_spheres", "spheres", "furnace"}) {
+         {"cornell", "cornell_glossy", "cornell_spheres", "spheres", "furnace", "gltf_materials"}) {
         SECTION(scene) {
             const std::string dir = temp_dir(std::string("rt-") + scene);
             const std::string common = "--width 32 --height 32 --spp 256";

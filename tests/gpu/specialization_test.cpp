@@ -39,7 +39,8 @@ nlohmann::json render(const std::string& scene, const std::string& dir, const st
 
 TEST_CASE("Vulkan: the specialized shader agrees with the all-features shader on every scene",
           "[gpu][features]") {
-    for (const char* scene : {"cornell", "cornell_glossy", "spheres", "furnace"}) {
+    for (const char* scene :
+         {"cornell", "cornell_glossy", "spheres", "furnace", "gltf_materials"}) {
         SECTION(scene) {
             const std::string dir = temp_dir(std::string("spec-vk-") + scene);
             const std::string cache = dir + "/cache";

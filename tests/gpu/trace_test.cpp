@@ -224,7 +224,8 @@ const uint32_t kOneLevel = FEATURES_ALL & ~FEATURE_INSTANCING;
 } // namespace
 
 TEST_CASE("GPU BVH traversal agrees with Embree on the bundled scenes", "[gpu]") {
-    for (const char* name : {"cornell", "cornell_glossy", "cornell_spheres", "spheres", "furnace"})
+    for (const char* name :
+         {"cornell", "cornell_glossy", "cornell_spheres", "spheres", "furnace", "gltf_materials"})
         for (BvhLayout layout : {BvhLayout::binary, BvhLayout::wide}) {
             const std::string label = std::string(name) + ", " + bvh_layout_name(layout);
             SECTION(label + ", two levels") {
