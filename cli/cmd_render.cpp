@@ -201,7 +201,7 @@ int run_render(const RenderArgs& a) {
 Subcommand add_render_command(CLI::App& app) {
     auto a = std::make_shared<RenderArgs>();
     CLI::App* c = app.add_subcommand(
-        "render", "Render a scene (.json, .obj or a bundled scene name) to OpenEXR");
+        "render", "Render a scene (.json, .obj, .gltf, .glb or a bundled scene name) to OpenEXR");
     add_scene_options(c, *a);
     c->add_option("-o,--output", a->output, "Output OpenEXR file (default: <scene>.exr)");
     c->add_option("--backend", a->backend, "cpu or vulkan")
