@@ -33,6 +33,7 @@ struct RenderArgs : SceneArgs {
     uint32_t gpu_invocations = 0;   // --gpu-invocations (docs/gpu.md, "Work items")
     double time_limit = 0;
     uint32_t sample_offset = 0;
+    std::string film = "lean"; // --film lean|full (render/film.h, FilmLayout)
     std::optional<std::string> stats, png;
     std::optional<std::string> pipeline_stats; // --pipeline-stats FILE (docs/gpu.md)
     std::string features = "scene";            // --features: scene (specialized) or all
@@ -146,6 +147,7 @@ int run_render(const RenderArgs& a) {
     opt.seed = a.seed;
     opt.sample_offset = a.sample_offset;
     opt.sampler = sampler_from_name(a.sampler);
+    opt.film = film_layout_from_name(a.film);
     opt.time_limit_s = a.time_limit;
     opt.threads = a.threads;
     opt.gpu_invocations = a.gpu_invocations;
@@ -216,6 +218,11 @@ Subcommand add_render_command(CLI::App& app) {
         ->check(number_in(0.0, 1e9));
     c->add_option("--sample-offset", a->sample_offset,
                   "First sample index: render samples K..K+spp-1 (docs/farm.md)");
+    c->add_option("--film", a->film,
+                  "EXR channels: lean (what compare reads) or full (also the batch means that "
+                  "merge needs for Sobol parts; docs/sampling.md)")
+        ->check(CLI::IsMember({"lean", "full"}))
+        ->capture_default_str();
     c->add_option("--stats", a->stats, "Write render statistics as JSON");
     c->add_option("--png", a->png, "Write a tone-mapped sRGB PNG preview");
     c->add_option("--pipeline-stats", a->pipeline_stats,

@@ -77,6 +77,13 @@ void RenderMerger::add(const std::string& path, const ExrImage& img) {
         input_error("{}: {} is '{}'; merge combines '{}' and '{}' estimates", path,
                     h::kVarianceEstimator, estimator, kVarianceFromSamples, kVarianceFromBatches);
     const uint32_t k = batch_part ? batch_layers(img) : 0;
+    if (const auto film = img.strings.find(h::kFilm);
+        batch_part && film != img.strings.end() &&
+        film->second != film_layout_name(FilmLayout::full))
+        input_error("{}: {} is '{}': a {} Sobol render keeps no batch means, which merge needs to "
+                    "rebuild the batch estimate of the parts; render the parts with --film full "
+                    "(docs/farm.md)",
+                    path, h::kFilm, film->second, film->second);
     if (batch_part) {
         std::vector<std::string> needed;
         for (int c = 0; c < 3; ++c) {
@@ -86,7 +93,7 @@ void RenderMerger::add(const std::string& path, const ExrImage& img) {
         for (const std::string& name : needed)
             if (!img.has(name))
                 input_error("{}: {} is '{}' but the file has no channel {}, which merge needs "
-                            "(render --sampler sobol writes it; render an older file again)",
+                            "(render --sampler sobol --film full writes it)",
                             path, h::kVarianceEstimator, estimator, name);
     }
     const std::string where = fmt::format("{}: {}", path, h::kSampleRanges);
@@ -181,9 +188,10 @@ void RenderMerger::add(const std::string& path, const ExrImage& img) {
     n_ += n;
 }
 
-ExrImage RenderMerger::result() const {
+ExrImage RenderMerger::result(FilmLayout layout) const {
     if (n_ == 0) input_error("merge: no parts");
     ExrImage out = first_;
+    out.strings[h::kFilm] = film_layout_name(layout);
     const double N = double(n_);
     const uint32_t k = uint32_t(batch_count_.size());
     auto plane = [&](const std::string& name, size_t pixels) -> std::vector<float>& {
@@ -210,10 +218,12 @@ ExrImage RenderMerger::result() const {
         std::vector<float>& s2 = plane(sample_variance_channel(colour), pixels);
         std::vector<BatchSum<double>> batch(k);
         for (size_t i = 0; i < pixels; ++i) {
-            s2[i] = float(N > 1 ? c.m2[i] / (N - 1.0) : 0.0);
+            const double v = N > 1 ? c.m2[i] / (N - 1.0) : 0.0;
+            s2[i] = layout == FilmLayout::full ? float(v) : lean_sample_variance(v);
             for (uint32_t b = 0; b < k; ++b) batch[b] = {c.batch_sum[i * k + b], batch_count_[b]};
             var[i] = float(batch_variance_of_mean(batch.data(), k));
         }
+        if (layout == FilmLayout::lean) continue;
         for (uint32_t b = 0; b < k; ++b) {
             std::vector<float>& mean_b = plane(batch_channel(b, colour), pixels);
             for (size_t i = 0; i < pixels; ++i)
@@ -245,10 +255,10 @@ ExrImage RenderMerger::result() const {
     return out;
 }
 
-ExrImage merge_files(const std::vector<std::string>& paths) {
+ExrImage merge_files(const std::vector<std::string>& paths, FilmLayout layout) {
     RenderMerger merger;
     for (const std::string& p : paths) merger.add(p, read_exr(p));
-    return merger.result();
+    return merger.result(layout);
 }
 
 } // namespace tp

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "image/exr_io.h"
+#include "render/film.h"
 
 #include <cstdint>
 #include <map>
@@ -38,7 +39,9 @@ namespace tp {
 // (render/moments.h) is the one a single render of all the samples would have computed, up to
 // the float rounding of the files. sample_variance.* pools by the pairwise update as above
 // (M2 = s^2 (n - 1)); twinpath:variance_dof is K' - 1 over the batches that hold samples.
-// Parts of different estimators or batch counts are refused (docs/sampling.md).
+// Parts of different estimators or batch counts are refused (docs/sampling.md), and so are
+// batch-estimated parts of the lean film (twinpath:film "lean", render/film.h), which keep no
+// batch means. Parts without twinpath:film (written before it) are full films.
 class RenderMerger {
   public:
     // Checks `image` against the parts added before and adds it. InputError (exit code 2)
@@ -49,8 +52,9 @@ class RenderMerger {
     // seed.
     void add(const std::string& path, const ExrImage& image);
 
-    // The merged image; InputError when no part was added.
-    ExrImage result() const;
+    // The merged image in the given layout (render/film.h): full keeps the batch means, so that
+    // it can be merged again; lean drops them. InputError when no part was added.
+    ExrImage result(FilmLayout layout = FilmLayout::full) const;
 
   private:
     // A channel without variance: sum over parts of n * value. One with variance (R, G, B):
@@ -79,6 +83,6 @@ class RenderMerger {
 };
 
 // Reads the files one at a time into a RenderMerger.
-ExrImage merge_files(const std::vector<std::string>& paths);
+ExrImage merge_files(const std::vector<std::string>& paths, FilmLayout layout = FilmLayout::full);
 
 } // namespace tp

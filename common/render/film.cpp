@@ -1,8 +1,11 @@
 #include "render/film.h"
 
+#include "util/error.h"
+
 #include <fmt/core.h>
 
 #include <algorithm>
+#include <cmath>
 #include <limits>
 
 namespace tp {
@@ -11,6 +14,24 @@ namespace {
 const char* const kColour[3] = {"R", "G", "B"};
 
 } // namespace
+
+FilmLayout film_layout_from_name(const std::string& name) {
+    if (name == "lean") return FilmLayout::lean;
+    if (name == "full") return FilmLayout::full;
+    input_error("--film {}: expected lean or full", name);
+}
+
+const char* film_layout_name(FilmLayout layout) {
+    return layout == FilmLayout::full ? "full" : "lean";
+}
+
+float lean_sample_variance(double s2) {
+    if (!std::isfinite(s2) || s2 == 0.0) return float(s2);
+    // s2 = m 2^e with m in [0.5, 1): keep m to 2^-11, round to nearest (ties to even).
+    int e = 0;
+    const double m = std::frexp(s2, &e);
+    return float(std::ldexp(std::nearbyint(std::ldexp(m, 11)), e - 11));
+}
 
 std::string sample_variance_channel(int c) {
     return fmt::format("sample_variance.{}", kColour[c]);
@@ -85,7 +106,7 @@ uint64_t Film::variance_dof() const {
     return dof == std::numeric_limits<uint64_t>::max() ? 0 : dof;
 }
 
-ExrImage Film::to_exr() const {
+ExrImage Film::to_exr(FilmLayout layout) const {
     ExrImage img;
     img.width = int(width_);
     img.height = int(height_);
@@ -108,14 +129,18 @@ ExrImage Film::to_exr() const {
         }
     }
     img.strings["twinpath:variance_estimator"] = batches_ ? "batches" : "samples";
+    img.strings["twinpath:film"] = film_layout_name(layout);
     if (batches_ == 0) return img;
     // For the samples estimator readers take spp - 1 (compare/rgb_image.h); without a pixel of
     // two filled batches there is no estimate and nothing to record.
     if (variance_dof() > 0) img.integers["twinpath:variance_dof"] = int64_t(variance_dof());
     for (int c = 0; c < 3; ++c) {
         float* s2 = plane(sample_variance_channel(c));
-        for (size_t i = 0; i < n; ++i)
-            s2[i] = count_[i] > 1 ? float(m2_[i][c] / double(count_[i] - 1)) : 0.0f;
+        for (size_t i = 0; i < n; ++i) {
+            const double v = count_[i] > 1 ? m2_[i][c] / double(count_[i] - 1) : 0.0;
+            s2[i] = layout == FilmLayout::full ? float(v) : lean_sample_variance(v);
+        }
+        if (layout == FilmLayout::lean) continue;
         for (uint32_t b = 0; b < batches_; ++b) {
             float* mean_b = plane(batch_channel(b, c));
             for (size_t i = 0; i < n; ++i) {

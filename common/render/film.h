@@ -23,6 +23,25 @@
 
 namespace tp {
 
+// What a batch-estimated film writes besides R, G, B, variance.R/G/B and
+// sample_variance.R/G/B (DESIGN.md, "Files"; docs/sampling.md, "What the file keeps"):
+// - lean (the default): nothing more, and sample_variance.* rounded to 11 significant bits:
+//   what `compare` reads, at 1.4x the bytes of a random-sampler file;
+// - full: sample_variance.* in float32 and the mean of every batch, batchB.R/G/B, which
+//   `merge` needs to rebuild the batch estimate of several parts exactly.
+// A samples-estimated film (the random sampler) writes the same channels in both.
+enum class FilmLayout { lean, full };
+
+// "lean", "full"; anything else is an InputError naming --film.
+FilmLayout film_layout_from_name(const std::string& name);
+const char* film_layout_name(FilmLayout layout);
+
+// A sample variance as the lean film stores it: rounded to nearest with 11 significant bits
+// (half precision's), kept in float32's range. Its relative error, at most 2^-11, is below the
+// statistical error of a sample variance, sqrt(2 / (n - 1)) for Gaussian samples, up to
+// n = 8 * 10^6 samples.
+float lean_sample_variance(double s2);
+
 // The channels a batch-estimated film writes besides R, G, B and variance.R/G/B
 // (DESIGN.md, "Files"; docs/sampling.md): the unbiased sample variance of the pixel's samples,
 // an estimate of the variance of one sample's marginal distribution, and the mean of each
@@ -62,11 +81,11 @@ class Film {
     uint64_t variance_dof() const;
 
     // R, G, B and variance.R/G/B channels, float32 (DESIGN.md, "Files"), the estimator in
-    // twinpath:variance_estimator ("samples" or "batches"); for batches also
-    // twinpath:variance_dof, sample_variance.R/G/B and batchB.R/G/B for B < K, so that
-    // compare can borrow a per-sample variance and merge can rebuild the batch estimate of
-    // several parts exactly (docs/sampling.md).
-    ExrImage to_exr() const;
+    // twinpath:variance_estimator ("samples" or "batches") and the layout in twinpath:film; for
+    // batches also twinpath:variance_dof and sample_variance.R/G/B, so that compare can borrow
+    // a per-sample variance, and in the full layout batchB.R/G/B for B < K, so that merge can
+    // rebuild the batch estimate of several parts exactly (docs/sampling.md).
+    ExrImage to_exr(FilmLayout layout = FilmLayout::lean) const;
 
   private:
     uint64_t pixel_dof(uint32_t p) const;

@@ -63,7 +63,7 @@ std::string settings_description(const FlatScene& scene, const DebugRequest& deb
 
 ExrImage render_exr(const RenderResult& r, const FlatScene& scene, const RenderOptions& options) {
     namespace h = header;
-    ExrImage img = r.film.to_exr();
+    ExrImage img = r.film.to_exr(options.film);
     const RenderStats& s = r.stats;
     img.integers[h::kSpp] = s.spp;
     img.integers[h::kSeed] = s.seed;

@@ -26,6 +26,7 @@ constexpr const char* kSettings = "twinpath:settings";    // settings_descriptio
 constexpr const char* kSampler = "twinpath:sampler";      // random, sobol
 constexpr const char* kVarianceEstimator = "twinpath:variance_estimator"; // Film::to_exr
 constexpr const char* kVarianceDof = "twinpath:variance_dof";             // batches: K' - 1
+constexpr const char* kFilm = "twinpath:film"; // "lean" or "full": render/film.h, FilmLayout
 constexpr const char* kRenderTime = "twinpath:render_time_s"; // double; merged: the parts' sum
 constexpr const char* kParts = "twinpath:parts";              // merge: one line per part
 constexpr const char* kIntegrator = "twinpath:integrator";    // debug views only

@@ -18,6 +18,8 @@ struct RenderResult;
 struct RenderOptions {
     uint32_t seed = 0;
     uint32_t sampler = 0; // SAMPLER_* (shared/rng.h, render/sampler.h)
+    // What render_exr writes (render/film.h): lean by default, full for parts to be merged.
+    FilmLayout film = FilmLayout::lean;
     // `--sample-offset K`: the render traces samples K, K+1, ... of every pixel (of the seed's
     // sequence) instead of 0, 1, ...; the scene's spp says how many. The random numbers depend
     // only on (seed, pixel, sample, dimension) (shared/rng.h), so renders of disjoint ranges

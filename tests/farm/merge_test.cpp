@@ -100,11 +100,12 @@ TEST_CASE("merge refuses another variance estimator and overlapping ranges", "[f
                           Catch::Contains("a.exr"));
 }
 
-TEST_CASE("CPU parts tiling samples 0 to 2N merge into the 2N render", "[farm]") {
+TEST_CASE("CPU parts of the random sampler tiling samples 0 to 2N merge into the 2N render",
+          "[farm]") {
     const std::string dir = tp::test::temp_dir("merge-cpu");
-    const std::string a = render_part(dir, "a.exr", "--spp 4");
-    const std::string b = render_part(dir, "b.exr", "--spp 4 --sample-offset 4");
-    const std::string single = render_part(dir, "single.exr", "--spp 8");
+    const std::string a = render_part(dir, "a.exr", "--sampler random --spp 4");
+    const std::string b = render_part(dir, "b.exr", "--sampler random --spp 4 --sample-offset 4");
+    const std::string single = render_part(dir, "single.exr", "--sampler random --spp 8");
     tp::test::check_merge_equals_single(dir, {b, a}, single);
     std::filesystem::remove_all(dir);
 }
@@ -112,11 +113,14 @@ TEST_CASE("CPU parts tiling samples 0 to 2N merge into the 2N render", "[farm]")
 TEST_CASE("Sobol parts tiling samples 0 to 2N merge into the 2N render", "[farm]") {
     // Batch b of the whole holds samples s = b mod 8 of both parts (docs/sampling.md): 12 spp
     // from 0 fill batches 0-3 twice and 4-7 once, 12 from 12 the other way round, so the merge
-    // must count each part's batches from its range to rebuild the 24-spp batch estimate.
+    // must count each part's batches from its range to rebuild the 24-spp batch estimate, from
+    // the batch means of the full film.
     const std::string dir = tp::test::temp_dir("merge-sobol");
-    const std::string a = render_part(dir, "a.exr", "--sampler sobol --spp 12");
-    const std::string b = render_part(dir, "b.exr", "--sampler sobol --spp 12 --sample-offset 12");
-    const std::string single = render_part(dir, "single.exr", "--sampler sobol --spp 24");
+    const std::string a = render_part(dir, "a.exr", "--sampler sobol --film full --spp 12");
+    const std::string b =
+        render_part(dir, "b.exr", "--sampler sobol --film full --spp 12 --sample-offset 12");
+    const std::string single =
+        render_part(dir, "single.exr", "--sampler sobol --film full --spp 24");
     tp::test::check_merge_equals_single(dir, {b, a}, single);
     std::filesystem::remove_all(dir);
 }
@@ -127,8 +131,8 @@ TEST_CASE("Sobol parts of two seeds merge batch by batch", "[farm]") {
     // (x_1b + x_2b) / 2, and the variance of the mean is the random-group estimator over those
     // 8 batch means (render/moments.h), recomputed here from the parts' files.
     const std::string dir = tp::test::temp_dir("merge-sobol-seeds");
-    const std::string a = render_part(dir, "a.exr", "--sampler sobol --spp 8 --seed 1");
-    const std::string b = render_part(dir, "b.exr", "--sampler sobol --spp 8 --seed 2");
+    const std::string a = render_part(dir, "a.exr", "--sampler sobol --film full --spp 8 --seed 1");
+    const std::string b = render_part(dir, "b.exr", "--sampler sobol --film full --spp 8 --seed 2");
     const std::string merged = dir + "/merged.exr";
     const auto r = run(
         twinpath("merge " + shell_quote(a) + " " + shell_quote(b) + " -o " + shell_quote(merged)));
@@ -165,17 +169,59 @@ TEST_CASE("Sobol parts of two seeds merge batch by batch", "[farm]") {
 
 TEST_CASE("merge refuses mixing samplers and Sobol parts without their batch channels", "[farm]") {
     const std::string dir = tp::test::temp_dir("merge-sobol-refuse");
-    const std::string random = render_part(dir, "random.exr", "--spp 2");
+    const std::string random = render_part(dir, "random.exr", "--sampler random --spp 2");
     const std::string sobol =
-        render_part(dir, "sobol.exr", "--sampler sobol --spp 2 --sample-offset 2");
+        render_part(dir, "sobol.exr", "--sampler sobol --film full --spp 2 --sample-offset 2");
     CHECK_THAT(merge_error({random, sobol}),
                Catch::Contains("sobol.exr") && Catch::Contains("twinpath:settings"));
-    const std::string other = render_part(dir, "other.exr", "--sampler sobol --spp 2");
+    const std::string other = render_part(dir, "other.exr", "--sampler sobol --film full --spp 2");
     ExrImage img = read_exr(other);
     img.channels.erase("batch3.G");
+    write_exr(dir + "/broken.exr", img);
+    CHECK_THAT(merge_error({sobol, dir + "/broken.exr"}),
+               Catch::Contains("broken.exr") && Catch::Contains("batch3.G"));
+    // The lean film (the default) keeps no batch means: refused, in either position, with the
+    // fix.
+    const std::string lean =
+        render_part(dir, "lean.exr", "--sampler sobol --spp 2 --sample-offset 4");
+    CHECK(read_exr(lean).strings.at("twinpath:film") == "lean");
+    for (const auto& parts : {std::vector<std::string>{sobol, lean}, {lean, sobol}})
+        CHECK_THAT(merge_error(parts), Catch::Contains("lean.exr") &&
+                                           Catch::Contains("twinpath:film") &&
+                                           Catch::Contains("--film full"));
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("merge reads full Sobol parts written before twinpath:film and writes either layout",
+          "[farm]") {
+    // Files of earlier versions have every channel of the full film and no twinpath:film: they
+    // merge as full films. merge --film lean writes what render writes by default: no batch
+    // means, the pooled sample variance rounded to 11 significant bits (render/film.h), every
+    // other channel as the full merge writes it.
+    const std::string dir = tp::test::temp_dir("merge-sobol-layouts");
+    const std::string a = render_part(dir, "a.exr", "--sampler sobol --film full --spp 8");
+    const std::string b =
+        render_part(dir, "b.exr", "--sampler sobol --film full --spp 8 --sample-offset 8");
+    ExrImage img = read_exr(a);
+    REQUIRE(img.strings.erase("twinpath:film") == 1);
     write_exr(dir + "/old.exr", img);
-    CHECK_THAT(merge_error({sobol, dir + "/old.exr"}),
-               Catch::Contains("old.exr") && Catch::Contains("batch3.G"));
+    const std::string full = dir + "/full.exr", lean = dir + "/lean.exr";
+    const std::string parts = shell_quote(dir + "/old.exr") + " " + shell_quote(b);
+    REQUIRE(run(twinpath("merge " + parts + " -o " + shell_quote(full))).exit_code == 0);
+    REQUIRE(run(twinpath("merge " + parts + " --film lean -o " + shell_quote(lean))).exit_code ==
+            0);
+    const ExrImage f = read_exr(full), l = read_exr(lean);
+    CHECK(f.strings.at("twinpath:film") == "full");
+    CHECK(l.strings.at("twinpath:film") == "lean");
+    CHECK(f.has(batch_channel(7, 2)));
+    CHECK_FALSE(l.has(batch_channel(0, 0)));
+    CHECK(l.channels.size() == 9);
+    for (const char* c : {"R", "G", "B", "variance.R", "variance.G", "variance.B"})
+        CHECK(l.channel(c) == f.channel(c));
+    for (int c = 0; c < 3; ++c)
+        for (size_t i = 0; i < f.channel("R").size(); ++i)
+            CHECK(l.channel(sample_variance_channel(c))[i] ==
+                  lean_sample_variance(f.channel(sample_variance_channel(c))[i]));
     std::filesystem::remove_all(dir);
 }
 
@@ -184,11 +230,12 @@ TEST_CASE("render --sample-offset shifts the samples of the CPU reference", "[fa
 }
 
 TEST_CASE("merge refuses parts that are not of one render, naming file and field", "[farm]") {
+    // Parts with the full film, which merge accepts whatever the sampler (docs/farm.md).
     const std::string dir = tp::test::temp_dir("merge-refuse");
-    const std::string a = render_part(dir, "a.exr", "--spp 2");
-    const std::string b = render_part(dir, "b.exr", "--spp 2 --sample-offset 2");
+    const std::string a = render_part(dir, "a.exr", "--film full --spp 2");
+    const std::string b = render_part(dir, "b.exr", "--film full --spp 2 --sample-offset 2");
     auto refused = [&](const std::string& name, const std::string& args, const char* field) {
-        const std::string p = render_part(dir, name, args);
+        const std::string p = render_part(dir, name, "--film full " + args);
         const std::string out = merge_error({a, p});
         CHECK_THAT(out, Catch::Contains(p) && Catch::Contains(field));
     };
@@ -198,18 +245,20 @@ TEST_CASE("merge refuses parts that are not of one render, naming file and field
     CHECK_THAT(merge_error({a, a}), Catch::Contains("overlap"));
     {
         const std::string p = dir + "/size.exr";
-        REQUIRE(run(twinpath("render cornell --width 8 --height 16 --max-depth 4 --spp 2 "
-                             "--sample-offset 2 -o " +
-                             shell_quote(p)))
-                    .exit_code == 0);
+        REQUIRE(
+            run(twinpath("render cornell --width 8 --height 16 --max-depth 4 --spp 2 --film full "
+                         "--sample-offset 2 -o " +
+                         shell_quote(p)))
+                .exit_code == 0);
         CHECK_THAT(merge_error({a, p}), Catch::Contains(p) && Catch::Contains("8x16"));
     }
     {
         const std::string p = dir + "/scene.exr";
-        REQUIRE(run(twinpath("render spheres --width 16 --height 16 --max-depth 4 --spp 2 "
-                             "--sample-offset 2 -o " +
-                             shell_quote(p)))
-                    .exit_code == 0);
+        REQUIRE(
+            run(twinpath("render spheres --width 16 --height 16 --max-depth 4 --spp 2 --film full "
+                         "--sample-offset 2 -o " +
+                         shell_quote(p)))
+                .exit_code == 0);
         CHECK_THAT(merge_error({a, p}), Catch::Contains(p));
         CHECK_THAT(merge_error({a, p}),
                    Catch::Contains("twinpath:camera") || Catch::Contains("twinpath:scene_hash"));
@@ -234,7 +283,7 @@ TEST_CASE("merge refuses parts that are not of one render, naming file and field
                    Catch::Contains("old.exr") && Catch::Contains("twinpath:sample_ranges"));
     }
     // Independent seeds: accepted and recorded, no single seed claimed.
-    const std::string s1 = render_part(dir, "seed1.exr", "--spp 2 --seed 1");
+    const std::string s1 = render_part(dir, "seed1.exr", "--film full --spp 2 --seed 1");
     const std::string merged = dir + "/seeds.exr";
     REQUIRE(run(twinpath("merge " + shell_quote(a) + " " + shell_quote(s1) + " -o " +
                          shell_quote(merged)))
@@ -250,9 +299,10 @@ TEST_CASE("merge refuses parts that are not of one render, naming file and field
 
 TEST_CASE("merge merges the AOV layers", "[farm]") {
     const std::string dir = tp::test::temp_dir("merge-aov");
-    const std::string a = render_part(dir, "a.exr", "--spp 1 --aov all");
-    const std::string b = render_part(dir, "b.exr", "--spp 1 --sample-offset 1 --aov all");
-    const std::string single = render_part(dir, "single.exr", "--spp 2 --aov all");
+    const std::string a = render_part(dir, "a.exr", "--film full --spp 1 --aov all");
+    const std::string b =
+        render_part(dir, "b.exr", "--film full --spp 1 --sample-offset 1 --aov all");
+    const std::string single = render_part(dir, "single.exr", "--film full --spp 2 --aov all");
     const std::string merged = dir + "/merged.exr";
     REQUIRE(run(twinpath("merge " + shell_quote(a) + " " + shell_quote(b) + " -o " +
                          shell_quote(merged)))

@@ -85,7 +85,7 @@ TEST_CASE("a 4-task Slurm array and its merge job equal one render", "[farm][slu
     for (int i = 0; i < 4; ++i) parts.push_back(out + "/part_000" + std::to_string(i) + ".exr");
     for (const std::string& p : parts) REQUIRE(fs::exists(p));
     REQUIRE(fs::exists(out + "/merged.exr"));
-    const std::string single = tp::test::render_part(out, "single.exr", "--spp 8");
+    const std::string single = tp::test::render_part(out, "single.exr", "--spp 8 --film full");
     tp::test::check_merged_equals_single(out + "/merged.exr", parts, single);
 
     // A lost part: the re-submission renders it alone and merges again.

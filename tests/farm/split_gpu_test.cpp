@@ -22,7 +22,8 @@ TEST_CASE("Vulkan parts tiling samples 0 to 2N merge into the 2N render", "[farm
     // parts in either order (merge_test.cpp).
     const std::string sampler = GENERATE(as<std::string>(), "random", "sobol");
     const std::string dir = tp::test::temp_dir("merge-vk-" + sampler);
-    const std::string vk = "--backend vulkan --vk-mode compute --sampler " + sampler + " ";
+    const std::string vk =
+        "--backend vulkan --vk-mode compute --film full --sampler " + sampler + " ";
     const uint32_t n = sampler == "sobol" ? 12 : 3;
     const std::string a = render_part(dir, "a.exr", vk + "--spp " + std::to_string(n));
     const std::string b = render_part(

@@ -162,18 +162,32 @@ TEST_CASE("film: the batch estimator is the variance of the batch means", "[film
     const double expected = double(ss / (k - 1) / k);
     CHECK(f.count(0) == x.size());
     CHECK(f.variance_of_mean(0).x == Approx(expected).epsilon(64 * kEps));
-    const tp::ExrImage img = f.to_exr();
+    const tp::ExrImage img = f.to_exr(tp::FilmLayout::full);
     CHECK(img.strings.at("twinpath:variance_estimator") == "batches");
+    CHECK(img.strings.at("twinpath:film") == "full");
     CHECK(img.integers.at("twinpath:variance_dof") == k - 1);
     // What compare borrows and merge rebuilds from (docs/sampling.md): the sample variance of
     // all 40 samples, M2 / (n - 1), and each batch's mean, both rounded once to float32.
     const TwoPass all = two_pass(x);
-    CHECK(img.channel(tp::sample_variance_channel(0))[0] ==
-          Approx(double(all.m2 / (x.size() - 1))).epsilon(1e-7));
+    const double s2 = double(all.m2 / (x.size() - 1));
+    CHECK(img.channel(tp::sample_variance_channel(0))[0] == Approx(s2).epsilon(1e-7));
     for (uint32_t b = 0; b < k; ++b)
         CHECK(img.channel(tp::batch_channel(b, 2))[0] == Approx(double(m[b])).epsilon(1e-7));
     CHECK(img.channels.size() == 6 + 3 + 3 * k);
     CHECK_FALSE(tp::Film(1, 1).to_exr().has(tp::sample_variance_channel(0)));
+
+    SECTION("the lean layout: no batch means, the sample variance to 11 significant bits") {
+        // What render writes by default (render/film.h): the same mean, variance and degrees of
+        // freedom, and the sample variance within half an 11-bit step, 2^-11 relative.
+        const tp::ExrImage lean = f.to_exr();
+        CHECK(lean.strings.at("twinpath:film") == "lean");
+        CHECK(lean.channels.size() == 6 + 3);
+        for (const char* c : {"R", "G", "B", "variance.R", "variance.G", "variance.B"})
+            CHECK(lean.channel(c) == img.channel(c));
+        CHECK(lean.integers.at("twinpath:variance_dof") == k - 1);
+        CHECK(std::abs(double(lean.channel(tp::sample_variance_channel(1))[0]) - s2) <=
+              std::ldexp(s2, -11) * (1 + 1e-6));
+    }
 
     SECTION("the GPU's per-batch sums give the same film") {
         tp::Film g(1, 1, k);
@@ -216,6 +230,34 @@ TEST_CASE("film: the batch estimator is the variance of the batch means", "[film
         }
         CHECK(u.variance_of_mean(0).x == Approx(double(v * 8 / 7)).epsilon(64 * kEps));
     }
+}
+
+TEST_CASE("film: the lean sample variance keeps 11 significant bits, rounded to nearest",
+          "[film]") {
+    // 1 + 2^-10 has 11 significant bits and is kept; 1 + 2^-11 lies halfway between 1 and
+    // 1 + 2^-10 and goes to the even one, 1; 1 + 3 * 2^-12 rounds up to 1 + 2^-10. The same at
+    // any binary exponent (variances of 10^-20 and 10^20 stay in float32's range), the carry
+    // into the next power of two, and the values that are kept as they are.
+    using tp::lean_sample_variance;
+    for (const int e : {0, -66, 66}) {
+        CHECK(lean_sample_variance(std::ldexp(1.0 + 0x1p-10, e)) ==
+              float(std::ldexp(1.0 + 0x1p-10, e)));
+        CHECK(lean_sample_variance(std::ldexp(1.0 + 0x1p-11, e)) == float(std::ldexp(1.0, e)));
+        CHECK(lean_sample_variance(std::ldexp(1.0 + 3 * 0x1p-12, e)) ==
+              float(std::ldexp(1.0 + 0x1p-10, e)));
+        CHECK(lean_sample_variance(std::ldexp(2.0 - 0x1p-12, e)) == float(std::ldexp(2.0, e)));
+    }
+    CHECK(lean_sample_variance(0.0) == 0.0f);
+    CHECK(std::isinf(lean_sample_variance(std::numeric_limits<double>::infinity())));
+    // Every value within 2^-11 relative: 10^5 log-uniform values against the bound.
+    std::mt19937_64 g(3);
+    std::uniform_real_distribution<double> u(-30.0, 30.0);
+    for (int i = 0; i < 100000; ++i) {
+        const double v = std::pow(10.0, u(g));
+        REQUIRE(std::abs(double(lean_sample_variance(v)) - v) <= std::ldexp(v, -11));
+    }
+    CHECK(tp::film_layout_from_name("full") == tp::FilmLayout::full);
+    CHECK_THROWS_WITH(tp::film_layout_from_name("half"), Catch::Contains("--film half"));
 }
 
 TEST_CASE("film: merging films of disjoint sample ranges keeps the batch estimate", "[film]") {
