@@ -15,8 +15,8 @@ void add_scene_options(CLI::App* c, SceneArgs& a) {
     c->add_option("--spp", a.spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 30));
     c->add_option("--seed", a.seed, "Random seed");
     c->add_option("--sampler", a.sampler,
-                  "random (independent numbers) or sobol (Owen-scrambled Sobol, variance from "
-                  "8 independent batches; docs/sampling.md)")
+                  "sobol (Owen-scrambled Sobol, variance from 8 independent batches) or random "
+                  "(independent numbers); docs/sampling.md")
         ->check(CLI::IsMember({"random", "sobol"}))
         ->capture_default_str();
     c->add_option("--width", a.width, "Image width")->check(CLI::Range(1u, 16384u));

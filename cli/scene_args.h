@@ -15,7 +15,7 @@ struct SceneArgs {
     std::string scene;
     std::optional<uint32_t> spp, width, height, min_depth, max_depth;
     uint32_t seed = 0, threads = 0;
-    std::string sampler = "random";
+    std::string sampler = "sobol";
     std::string device, vk_mode = "auto";
     std::string eye, target, up;
     std::optional<float> fov;

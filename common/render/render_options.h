@@ -5,6 +5,7 @@
 #include "render/debug_output.h"
 #include "render/film.h"
 #include "render/stats.h"
+#include "shared/rng.h"
 
 #include <atomic>
 #include <cstdint>
@@ -17,7 +18,9 @@ struct RenderResult;
 
 struct RenderOptions {
     uint32_t seed = 0;
-    uint32_t sampler = 0; // SAMPLER_* (shared/rng.h, render/sampler.h)
+    // SAMPLER_* (shared/rng.h, render/sampler.h); Sobol by default (docs/sampling.md, "Which is
+    // the default, and why").
+    uint32_t sampler = SAMPLER_SOBOL;
     // What render_exr writes (render/film.h): lean by default, full for parts to be merged.
     FilmLayout film = FilmLayout::lean;
     // `--sample-offset K`: the render traces samples K, K+1, ... of every pixel (of the seed's

@@ -5,6 +5,7 @@
 
 #include "compare/rgb_image.h"
 #include "shared/lang.h"
+#include "shared/rng.h"
 
 #include <nlohmann/json.hpp>
 
@@ -17,8 +18,8 @@ struct RenderSpec {
     std::string scene = "cornell"; // bundled name or path
     uint32_t width = 64, height = 64, spp = 16;
     uint32_t seed = 1;
-    uint32_t sampler = 0; // SAMPLER_* (shared/rng.h)
-    uint32_t threads = 0; // 0: all cores
+    uint32_t sampler = SAMPLER_SOBOL; // SAMPLER_* (shared/rng.h); the renderer's default
+    uint32_t threads = 0;             // 0: all cores
     std::optional<uint32_t> max_depth;
     std::optional<vec3> eye, target;
     std::optional<float> fov;
