@@ -8,7 +8,9 @@
 #include "support/test_paths.h"
 
 #include <catch2/catch.hpp>
+#include <fmt/core.h>
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 #include <random>
@@ -122,6 +124,58 @@ TEST_CASE("Sobol parts tiling samples 0 to 2N merge into the 2N render", "[farm]
     const std::string single =
         render_part(dir, "single.exr", "--sampler sobol --film full --spp 24");
     tp::test::check_merge_equals_single(dir, {b, a}, single);
+    std::filesystem::remove_all(dir);
+}
+
+TEST_CASE("Sobol parts merged with --film lean equal the default render of all their samples",
+          "[farm]") {
+    // What a farm hands the user: full parts, merged into the lean film that a plain render
+    // writes by default. The full merge equals the full 24-spp render (the test above); the lean
+    // files must differ from those only by lean_sample_variance's rounding of sample_variance.*
+    // (render/film.h), so the lean merge meets the lean render within the full bound plus that
+    // rounding of each file, at most 2^-11 of each value.
+    const std::string dir = tp::test::temp_dir("merge-sobol-lean");
+    const std::string a = render_part(dir, "a.exr", "--sampler sobol --film full --spp 12");
+    const std::string b =
+        render_part(dir, "b.exr", "--sampler sobol --film full --spp 12 --sample-offset 12");
+    const std::string single_full =
+        render_part(dir, "single_full.exr", "--sampler sobol --film full --spp 24");
+    const std::string single_lean = render_part(dir, "single.exr", "--spp 24");
+    const double full_tolerance = tp::test::check_merge_equals_single(dir, {b, a}, single_full);
+    const std::string merged_lean = dir + "/merged_lean.exr";
+    const auto r = run(twinpath("merge " + shell_quote(b) + " " + shell_quote(a) +
+                                " --film lean -o " + shell_quote(merged_lean)));
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+
+    const ExrImage ml = read_exr(merged_lean), sl = read_exr(single_lean);
+    const ExrImage mf = read_exr(dir + "/merged.exr"), sf = read_exr(single_full);
+    CHECK(sl.strings.at("twinpath:film") == "lean");
+    CHECK(sl.strings.at(header::kVarianceEstimator) == "batches");
+    CHECK(ml.channels.size() == sl.channels.size());
+    for (const char* c : {"R", "G", "B", "variance.R", "variance.G", "variance.B"}) {
+        CHECK(sl.channel(c) == sf.channel(c));
+        CHECK(ml.channel(c) == mf.channel(c));
+    }
+    constexpr double kLeanRound = 4.8828125e-4; // 2^-11: 11 significant bits, to nearest
+    double tolerance = full_tolerance;
+    for (int c = 0; c < 3; ++c) {
+        const std::string name = sample_variance_channel(c);
+        for (size_t i = 0; i < sl.channel(name).size(); ++i) {
+            const double full_m = mf.channel(name)[i], full_s = sf.channel(name)[i];
+            CHECK(sl.channel(name)[i] == lean_sample_variance(full_s));
+            CHECK(ml.channel(name)[i] == lean_sample_variance(full_m));
+            const double bound =
+                std::fabs(full_m - full_s) + kLeanRound * (std::fabs(full_m) + std::fabs(full_s));
+            CHECK(std::fabs(double(ml.channel(name)[i]) - double(sl.channel(name)[i])) <= bound);
+            tolerance = std::max(tolerance, bound);
+        }
+    }
+    const auto e =
+        run(twinpath("compare --exact " + shell_quote(merged_lean) + " " +
+                     shell_quote(single_lean) + fmt::format(" --tolerance {:.17g}", tolerance)));
+    INFO(e.out);
+    CHECK(e.exit_code == 0);
     std::filesystem::remove_all(dir);
 }
 

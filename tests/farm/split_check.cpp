@@ -84,19 +84,19 @@ void check_offset_shifts_samples(const std::string& dir, const std::string& back
     std::filesystem::remove_all(dir);
 }
 
-void check_merge_equals_single(const std::string& dir, const std::vector<std::string>& parts,
-                               const std::string& single) {
+double check_merge_equals_single(const std::string& dir, const std::vector<std::string>& parts,
+                                 const std::string& single) {
     const std::string merged = dir + "/merged.exr";
     std::string args;
     for (const std::string& p : parts) args += shell_quote(p) + " ";
     const auto r = run(twinpath("merge " + args + "-o " + shell_quote(merged)));
     INFO(r.out);
     REQUIRE(r.exit_code == 0);
-    check_merged_equals_single(merged, parts, single);
+    return check_merged_equals_single(merged, parts, single);
 }
 
-void check_merged_equals_single(const std::string& merged, const std::vector<std::string>& parts,
-                                const std::string& single) {
+double check_merged_equals_single(const std::string& merged, const std::vector<std::string>& parts,
+                                  const std::string& single) {
     const ExrImage m = read_exr(merged), s = read_exr(single);
     std::vector<ExrImage> p;
     for (const std::string& path : parts) p.push_back(read_exr(path));
@@ -156,6 +156,7 @@ void check_merged_equals_single(const std::string& merged, const std::vector<std
                      " --tolerance " + fmt::format("{:.17g}", largest)));
     INFO(e.out);
     CHECK(e.exit_code == 0);
+    return largest;
 }
 
 } // namespace tp::test

@@ -19,14 +19,14 @@ std::string render_part(const std::string& dir, const std::string& name, const s
 void check_offset_shifts_samples(const std::string& dir, const std::string& backend_args);
 
 // `merge` of `parts` (tiling [0, N) of one seed) against `single` (one render of [0, N)):
-// check_merged_equals_single on dir/merged.exr.
-void check_merge_equals_single(const std::string& dir, const std::vector<std::string>& parts,
-                               const std::string& single);
+// check_merged_equals_single on dir/merged.exr; returns its tolerance.
+double check_merge_equals_single(const std::string& dir, const std::vector<std::string>& parts,
+                                 const std::string& single);
 
 // The merge of `parts` in `merged` against `single`: every channel per pixel within the bound
 // that the float32 rounding of the files allows (split_check.cpp derives it), and
-// `compare --exact` with the largest bound as tolerance.
-void check_merged_equals_single(const std::string& merged, const std::vector<std::string>& parts,
-                                const std::string& single);
+// `compare --exact` with the largest bound as tolerance, which it returns.
+double check_merged_equals_single(const std::string& merged, const std::vector<std::string>& parts,
+                                  const std::string& single);
 
 } // namespace tp::test
