@@ -7,7 +7,7 @@
 # Usage: benchmarks/lean-film/sizes.sh [TWINPATH]   (default build/bin/twinpath)
 set -euo pipefail
 tp=${1:-build/bin/twinpath}
-scenes=(cornell cornell_glossy cornell_spheres furnace spheres)
+scenes=(cornell cornell_glossy cornell_spheres furnace spheres gltf_materials)
 dir=$(mktemp -d)
 trap 'rm -rf "$dir"' EXIT
 render() { "$tp" render "$1" --width 256 --height 256 --threads 2 -o "$2" "${@:3}" >/dev/null; }
