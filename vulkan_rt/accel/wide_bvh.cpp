@@ -185,10 +185,13 @@ void wide_child_box(const WideBvhNode& node, uint32_t slot, glm::dvec3& lo, glm:
     }
 }
 
-WideTriangleBuffer::WideTriangleBuffer() : words_(1, glm::uvec4(0u)) {}
+void WideTriangleBuffer::start() {
+    if (words_.empty()) words_.push_back(glm::uvec4(0u)); // the header, set by finish()
+}
 
 uint32_t WideTriangleBuffer::add_triangle(vec3 v0, vec3 v1, vec3 v2, uint32_t primitive,
                                           uint32_t instance) {
+    start();
     const vec3 n = triangle_plane_normal(v0, v1, v2);
     words_.push_back(record_word(v0, n.x));
     words_.push_back(record_word(v1, n.y));
@@ -199,6 +202,7 @@ uint32_t WideTriangleBuffer::add_triangle(vec3 v0, vec3 v1, vec3 v2, uint32_t pr
 }
 
 uint32_t WideTriangleBuffer::add_instance(uint32_t instance) {
+    start();
     words_.push_back(glm::uvec4(instance, 0u, 0u, 0u));
     words_.push_back(glm::uvec4(0u));
     words_.push_back(glm::uvec4(0u));
@@ -208,6 +212,7 @@ uint32_t WideTriangleBuffer::add_instance(uint32_t instance) {
 }
 
 void WideTriangleBuffer::finish(bool one_level) {
+    start();
     // One uint per record, primitive << bits | instance, where the instance's bits and the
     // primitive's fit 32 (always with two levels, whose IDs are primitives alone); else two.
     uint32_t bits = 0, primitive_bits = 0;

@@ -48,11 +48,10 @@ struct WideTriangle {
     vec3 normal; // (v1 - v0) x (v2 - v0), as triangle_plane_normal gives it
 };
 
-// The triangle buffer (BINDING_BVH_TRIS) of the wide layout, 16-byte words (cwbvh.h).
+// The triangle buffer (BINDING_BVH_TRIS) of the wide layout, 16-byte words (cwbvh.h); empty
+// until the first record (a binary build holds none).
 class WideTriangleBuffer {
   public:
-    WideTriangleBuffer();
-
     // Appends a record and returns its index.
     uint32_t add_triangle(vec3 v0, vec3 v1, vec3 v2, uint32_t primitive, uint32_t instance);
     uint32_t add_instance(uint32_t instance); // a top-level item
@@ -69,6 +68,7 @@ class WideTriangleBuffer {
     uint32_t instance(uint32_t record) const; // one level
 
   private:
+    void start();                      // the header word, before the first record
     uint32_t id(uint32_t index) const; // uint `index` of the ID table
     std::vector<glm::uvec4> words_;
     std::vector<uint32_t> primitive_, instance_; // until finish()
