@@ -29,7 +29,7 @@ namespace {
 struct RenderArgs : SceneArgs {
     std::optional<std::string> output; // each output: given (perhaps as "") or not
     std::string backend = "cpu";
-    std::optional<std::string> bvh; // --bvh binary|wide (compute mode's BVH layout)
+    std::optional<std::string> bvh; // --bvh binary|wide|auto (compute mode's BVH layout)
     uint32_t gpu_invocations = 0;   // --gpu-invocations (docs/gpu.md, "Work items")
     double time_limit = 0;
     uint32_t sample_offset = 0;
@@ -208,8 +208,10 @@ Subcommand add_render_command(CLI::App& app) {
     c->add_option("-o,--output", a->output, "Output OpenEXR file (default: <scene>.exr)");
     c->add_option("--backend", a->backend, "cpu or vulkan")
         ->check(CLI::IsMember({"cpu", "vulkan"}));
-    c->add_option("--bvh", a->bvh, "Compute mode's BVH layout")
-        ->check(CLI::IsMember({"binary", "wide"}));
+    c->add_option("--bvh", a->bvh,
+                  "Compute mode's BVH layout: binary (default), wide, or auto (chosen per scene "
+                  "from both trees' estimated work per ray, docs/gpu.md)")
+        ->check(CLI::IsMember({"binary", "wide", "auto"}));
     c->add_option("--gpu-invocations", a->gpu_invocations,
                   "Vulkan: render invocations per launch (0: as many as the device keeps "
                   "resident where it says, else one per sample; docs/gpu.md)")

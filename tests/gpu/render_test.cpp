@@ -162,7 +162,9 @@ TEST_CASE("with the same seed both backends trace the same paths", "[gpu]") {
 TEST_CASE("the wide BVH traces the CPU's paths and its images are consistent", "[gpu]") {
     // --bvh wide (vulkan_rt/accel/wide_bvh.h): the same-seed replay of the test above, and an
     // independent-seed comparison as in the first test, on cornell (one-level BVH), spheres
-    // (two levels) and cornell_spheres (its glass and mirror spheres: the longest paths).
+    // (two levels) and cornell_spheres (its glass and mirror spheres: the longest paths); and
+    // --bvh auto (vulkan_rt/accel/bvh_estimate.h), which today picks wide on cornell and
+    // cornell_spheres and binary on spheres, so that both of its outcomes run.
     for (const char* scene : {"cornell", "spheres", "cornell_spheres"}) {
         SECTION(scene) {
             const std::string dir = temp_dir(std::string("wide-") + scene);
@@ -182,6 +184,19 @@ TEST_CASE("the wide BVH traces the CPU's paths and its images are consistent", "
             const nlohmann::json stats = read_json(dir + "/same.json");
             CHECK(stats["extra"]["bvh_layout"] == "wide");
             CHECK(stats["accel_bytes"].get<uint64_t>() > 0);
+            // --bvh auto renders with the layout it chose (the same BVH: the same image, bit for
+            // bit) and says which.
+            const std::string small = " --vk-mode compute --width 24 --height 24 --spp 2 --seed 5";
+            REQUIRE(render(scene, "vulkan", dir, "auto", "--bvh auto" + small).exit_code == 0);
+            const nlohmann::json chosen = read_json(dir + "/auto.json");
+            CHECK(chosen["extra"]["bvh_requested"] == "auto");
+            const std::string layout = chosen["extra"]["bvh_layout"];
+            REQUIRE(render(scene, "vulkan", dir, "chosen", "--bvh " + layout + small).exit_code ==
+                    0);
+            const ExrImage by_auto = read_exr(dir + "/auto.exr");
+            const ExrImage by_name = read_exr(dir + "/chosen.exr");
+            for (const char* ch : {"R", "G", "B"})
+                CHECK(by_auto.channel(ch) == by_name.channel(ch));
             if (!compare_available()) continue;
             REQUIRE(render(scene, "vulkan", dir, "wide", "--spp 64 --seed 6" + wide).exit_code ==
                     0);

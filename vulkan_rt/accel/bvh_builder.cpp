@@ -4,6 +4,7 @@
 #include "shared/surface.h"
 #include "util/error.h"
 
+#include "vulkan_rt/accel/bvh_estimate.h"
 #include "vulkan_rt/accel/embree_tree.h"
 #include "vulkan_rt/accel/wide_collapse.h"
 
@@ -248,32 +249,76 @@ void build_two_level(const FlatScene& scene, Builder& builder, BvhBuild& out) {
                                  });
 }
 
-} // namespace
-
-BvhBuild build_bvh(const FlatScene& scene, uint32_t features, BvhLayout layout) {
+// The trees of one layout, not yet checked against the traversal stack.
+BvhBuild build_layout(const FlatScene& scene, uint32_t features, BvhLayout layout) {
     BvhBuild out;
     out.layout = layout;
+    out.requested = layout;
     Builder builder(out);
     if (feature_on(features, FEATURE_INSTANCING))
         build_two_level(scene, builder, out);
     else
         build_one_level(scene, builder, out);
     if (layout == BvhLayout::wide) out.wide_triangles.finish(out.one_level);
-    const uint32_t stack = layout == BvhLayout::wide ? CWBVH_STACK_SIZE : BVH_STACK_SIZE;
-    if (out.top_depth + out.bottom_depth + 2 > stack)
-        input_error("the scene's BVH is too deep for the GPU traversal stack ({} + {} levels)",
-                    out.top_depth, out.bottom_depth);
+    out.estimate = estimate_bvh_work(out, scene);
     return out;
+}
+
+bool fits_stack(const BvhBuild& b) {
+    const uint32_t stack = b.layout == BvhLayout::wide ? CWBVH_STACK_SIZE : BVH_STACK_SIZE;
+    return b.top_depth + b.bottom_depth + 2 <= stack;
+}
+
+BvhBuild checked(BvhBuild b) {
+    if (!fits_stack(b))
+        input_error("the scene's BVH is too deep for the GPU traversal stack ({} + {} levels)",
+                    b.top_depth, b.bottom_depth);
+    return b;
+}
+
+} // namespace
+
+BvhBuild build_bvh(const FlatScene& scene, uint32_t features, BvhLayout layout) {
+    if (layout != BvhLayout::automatic) return checked(build_layout(scene, features, layout));
+    BvhBuild binary = build_layout(scene, features, BvhLayout::binary);
+    BvhBuild wide = build_layout(scene, features, BvhLayout::wide);
+    const bool pick_wide = fits_stack(wide) && (!fits_stack(binary) ||
+                                                auto_prefers_wide(wide.estimate, binary.estimate));
+    BvhBuild& pick = pick_wide ? wide : binary;
+    pick.requested = BvhLayout::automatic;
+    pick.other_estimate = (pick_wide ? binary : wide).estimate;
+    return checked(std::move(pick));
+}
+
+std::map<std::string, std::string> bvh_stats(const BvhBuild& bvh) {
+    std::map<std::string, std::string> s;
+    s["bvh_layout"] = bvh_layout_name(bvh.layout);
+    s["bvh_requested"] = bvh_layout_name(bvh.requested);
+    s["bvh_levels"] = bvh.one_level ? "1" : "2";
+    s["bvh_estimate"] = describe(bvh.estimate);
+    if (bvh.requested == BvhLayout::automatic) {
+        const BvhLayout other = bvh.layout == BvhLayout::wide ? BvhLayout::binary : BvhLayout::wide;
+        s[std::string("bvh_estimate_") + bvh_layout_name(other)] = describe(bvh.other_estimate);
+    }
+    return s;
 }
 
 BvhLayout parse_bvh_layout(const std::string& name) {
     if (name == "binary") return BvhLayout::binary;
     if (name == "wide") return BvhLayout::wide;
-    input_error("unknown BVH layout '{}' (expected binary or wide)", name);
+    if (name == "auto") return BvhLayout::automatic;
+    input_error("unknown BVH layout '{}' (expected binary, wide or auto)", name);
 }
 
 const char* bvh_layout_name(BvhLayout layout) {
-    return layout == BvhLayout::wide ? "wide" : "binary";
+    switch (layout) {
+    case BvhLayout::wide:
+        return "wide";
+    case BvhLayout::automatic:
+        return "auto";
+    default:
+        return "binary";
+    }
 }
 
 } // namespace tp

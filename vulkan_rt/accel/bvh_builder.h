@@ -15,22 +15,29 @@
 #include "scene/flatten.h"
 #include "shared/features.h"
 #include "shared/intersect.h"
+#include "vulkan_rt/accel/bvh_estimate.h"
 #include "vulkan_rt/accel/wide_bvh.h"
 
 #include <cstdint>
+#include <map>
 #include <string>
 #include <vector>
 
 namespace tp {
 
-enum class BvhLayout { binary, wide };
+// `automatic` (--bvh auto) builds both and keeps the one its rule prefers from their
+// estimated work per ray (bvh_estimate.h); the build it returns has the layout it chose.
+enum class BvhLayout { binary, wide, automatic };
 
-// "binary" or "wide" (the --bvh option); InputError for anything else.
+// "binary", "wide" or "auto" (the --bvh option); InputError for anything else.
 BvhLayout parse_bvh_layout(const std::string& name);
 const char* bvh_layout_name(BvhLayout layout);
 
 struct BvhBuild {
-    BvhLayout layout = BvhLayout::binary;
+    BvhLayout layout = BvhLayout::binary;    // binary or wide
+    BvhLayout requested = BvhLayout::binary; // the layout asked for, or automatic
+    BvhEstimate estimate;                    // the per-ray work of these trees
+    BvhEstimate other_estimate;              // automatic: the other layout's
     // The nodes of the layout (the other array stays empty); two levels: each mesh's tree,
     // then the top level.
     std::vector<BvhNode> nodes;
@@ -56,8 +63,13 @@ struct BvhBuild {
 // Two levels when `features` (shared/features.h) has FEATURE_INSTANCING, else one level: the
 // shape that the render shader specialized to `features` traverses. Throws RuntimeError when
 // Embree fails and InputError when the trees are too deep for the shader's traversal stack
-// (BVH_STACK_SIZE, CWBVH_STACK_SIZE).
+// (BVH_STACK_SIZE, CWBVH_STACK_SIZE); `automatic` keeps a layout that fits where one does.
 BvhBuild build_bvh(const FlatScene& scene, uint32_t features = FEATURES_ALL,
                    BvhLayout layout = BvhLayout::binary);
+
+// The render statistics' words about the build (RenderStats::extra): bvh_layout (the one
+// built), bvh_requested, bvh_levels (1 or 2), bvh_estimate (bvh_estimate.h) and with auto the
+// other layout's estimate, bvh_estimate_binary or bvh_estimate_wide.
+std::map<std::string, std::string> bvh_stats(const BvhBuild& bvh);
 
 } // namespace tp

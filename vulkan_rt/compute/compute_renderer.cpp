@@ -110,8 +110,7 @@ ModeSetup prepare_compute(const VulkanContext& ctx, const FlatScene& scene,
     ModeSetup m;
     m.accel.build_time_s = seconds_since(t_build);
     m.accel.bytes = bvh.bytes();
-    m.accel.extra["bvh_levels"] = bvh.one_level ? "1" : "2";
-    m.accel.extra["bvh_layout"] = bvh_layout_name(layout);
+    m.accel.extra = bvh_stats(bvh);
     m.buffers =
         upload_scene(ctx, scene, seeded_params(scene, options), bvh.mesh_roots, 0, features);
     auto tracer = std::make_unique<ComputeTracer>(

@@ -34,7 +34,7 @@ ClosestHits closest_hits_compute(const VulkanContext& ctx, const FlatScene& scen
                                  const std::vector<Ray>& all_rays, BvhLayout layout,
                                  uint32_t features) {
     const BvhBuild bvh = build_bvh(scene, features, layout);
-    const bool wide = layout == BvhLayout::wide;
+    const bool wide = bvh.layout == BvhLayout::wide;
     const SceneBuffers sb = upload_scene(ctx, scene, scene.params, bvh.mesh_roots, 0);
     const BvhBuffers bb = upload_bvh(ctx, bvh);
     const Buffer dummy(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
