@@ -37,7 +37,7 @@ std::vector<Backend> expand_backends(const std::vector<std::string>& requested,
             r.rfind("vulkan:", 0) == 0 ? parse_vk_backend(r.substr(7)) : std::nullopt;
         if (r != "vulkan" && !one)
             input_error("--backends: unknown backend '{}' (expected cpu, vulkan, vulkan:compute, "
-                        "vulkan:compute-wide or vulkan:pipeline)",
+                        "vulkan:compute-wide, vulkan:compute-auto or vulkan:pipeline)",
                         r);
         DeviceInfo device;
         try {
@@ -52,7 +52,8 @@ std::vector<Backend> expand_backends(const std::vector<std::string>& requested,
             add({"vulkan", vk_backend_name(b), where, b});
         };
         if (!one) {
-            // compute-wide (compute mode over the wide BVH) only when asked for by name.
+            // compute-wide and compute-auto (compute mode's other BVH layouts) only when asked for
+            // by name.
             for (const VkMode m : modes) add_vulkan({m, BvhLayout::binary});
         } else if (std::find(modes.begin(), modes.end(), one->mode) != modes.end()) {
             add_vulkan(*one);

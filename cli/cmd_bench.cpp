@@ -81,7 +81,7 @@ Subcommand add_bench_command(CLI::App& app) {
         ->capture_default_str();
     c->add_option("--backends", o.backends,
                   "cpu, vulkan (every mode of the device), vulkan:compute, vulkan:compute-wide "
-                  "(--bvh wide), vulkan:pipeline")
+                  "(--bvh wide), vulkan:compute-auto (--bvh auto), vulkan:pipeline")
         ->delimiter(',')
         ->capture_default_str();
     c->add_option("--samplers", o.samplers,

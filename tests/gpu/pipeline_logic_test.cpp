@@ -333,7 +333,7 @@ TEST_CASE("the mode and backend words read back as what they name; other words a
     CHECK_THROWS_WITH(parse_vk_mode_request("rtx"),
                       "--vk-mode rtx: expected auto, compute or pipeline");
 
-    for (const std::string word : {"compute", "compute-wide", "pipeline"}) {
+    for (const std::string word : {"compute", "compute-wide", "compute-auto", "pipeline"}) {
         const std::optional<VkBackend> b = parse_vk_backend(word);
         REQUIRE(b);
         CHECK(vk_backend_name(*b) == word);
@@ -341,6 +341,8 @@ TEST_CASE("the mode and backend words read back as what they name; other words a
     CHECK(parse_vk_backend("compute")->bvh == BvhLayout::binary);
     CHECK(parse_vk_backend("compute-wide")->mode == VkMode::compute);
     CHECK(parse_vk_backend("compute-wide")->bvh == BvhLayout::wide);
+    CHECK(parse_vk_backend("compute-auto")->bvh == BvhLayout::automatic);
+    CHECK(parse_vk_backend("compute-auto")->mode == VkMode::compute);
     CHECK(parse_vk_backend("pipeline")->mode == VkMode::pipeline);
     CHECK_FALSE(parse_vk_backend("pipeline-wide"));
     CHECK_FALSE(parse_vk_backend("auto"));

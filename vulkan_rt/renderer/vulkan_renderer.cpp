@@ -57,12 +57,15 @@ RenderResult render_on(const VulkanContext& ctx, const FlatScene& scene,
 
 std::string vk_backend_name(const VkBackend& b) {
     const std::string mode = vk_mode_name(b.mode);
-    return b.mode == VkMode::compute && b.bvh == BvhLayout::wide ? mode + "-wide" : mode;
+    return b.mode == VkMode::compute && b.bvh != BvhLayout::binary
+               ? mode + "-" + bvh_layout_name(b.bvh)
+               : mode;
 }
 
 std::optional<VkBackend> parse_vk_backend(const std::string& word) {
     for (const VkBackend b : {VkBackend{VkMode::compute, BvhLayout::binary},
                               VkBackend{VkMode::compute, BvhLayout::wide},
+                              VkBackend{VkMode::compute, BvhLayout::automatic},
                               VkBackend{VkMode::pipeline, BvhLayout::binary}})
         if (word == vk_backend_name(b)) return b;
     return std::nullopt;

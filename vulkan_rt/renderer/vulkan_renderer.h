@@ -33,8 +33,9 @@ struct VkBackend {
     VkMode mode = VkMode::compute;
     BvhLayout bvh = BvhLayout::binary;
 };
-// Its word: compute, pipeline, or compute-wide (compute mode over the compressed 8-wide BVH,
-// `render --vk-mode compute --bvh wide`).
+// Its word: compute, pipeline, compute-wide (compute mode over the compressed 8-wide BVH,
+// `render --vk-mode compute --bvh wide`) or compute-auto (`--bvh auto`: the layout chosen per
+// scene, bvh_estimate.h).
 std::string vk_backend_name(const VkBackend& backend);
 // The backend a word names; nullopt for any other word.
 std::optional<VkBackend> parse_vk_backend(const std::string& word);
