@@ -149,7 +149,7 @@ TEST_CASE("BVH estimate: node visits and triangle tests are what random lines me
         }
 }
 
-TEST_CASE("--bvh auto keeps the layout its rule prefers and says why", "[wide_bvh]") {
+TEST_CASE("bvh auto keeps the layout its rule prefers and says why", "[wide_bvh]") {
     for (const char* name : {"cornell", "cornell_spheres", "furnace"}) {
         const FlatScene scene = load(name);
         for (uint32_t features : {FEATURES_ALL, kOneLevel}) {
