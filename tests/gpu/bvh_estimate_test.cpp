@@ -156,7 +156,7 @@ TEST_CASE("bvh auto keeps the layout its rule prefers and says why", "[wide_bvh]
             const BvhBuild binary = build_bvh(scene, features, BvhLayout::binary);
             const BvhBuild wide = build_bvh(scene, features, BvhLayout::wide);
             const BvhBuild chosen = build_bvh(scene, features, BvhLayout::automatic);
-            const bool prefers_wide = wide.estimate.boxes <= kAutoBoxRatio * binary.estimate.boxes;
+            const bool prefers_wide = binary.estimate.nodes >= kAutoWideMinBinaryNodes;
             INFO(name << ": binary " << describe(binary.estimate) << "; wide "
                       << describe(wide.estimate));
             CHECK(chosen.layout == (prefers_wide ? BvhLayout::wide : BvhLayout::binary));

@@ -282,8 +282,8 @@ BvhBuild build_bvh(const FlatScene& scene, uint32_t features, BvhLayout layout) 
     if (layout != BvhLayout::automatic) return checked(build_layout(scene, features, layout));
     BvhBuild binary = build_layout(scene, features, BvhLayout::binary);
     BvhBuild wide = build_layout(scene, features, BvhLayout::wide);
-    const bool pick_wide = fits_stack(wide) && (!fits_stack(binary) ||
-                                                auto_prefers_wide(wide.estimate, binary.estimate));
+    const bool pick_wide =
+        fits_stack(wide) && (!fits_stack(binary) || auto_prefers_wide(binary.estimate));
     BvhBuild& pick = pick_wide ? wide : binary;
     pick.requested = BvhLayout::automatic;
     pick.other_estimate = (pick_wide ? binary : wide).estimate;

@@ -123,8 +123,8 @@ BvhEstimate estimate_bvh_work(const BvhBuild& bvh, const FlatScene& scene) {
     return Estimator(bvh, scene).run();
 }
 
-bool auto_prefers_wide(const BvhEstimate& wide, const BvhEstimate& binary) {
-    return wide.boxes <= kAutoBoxRatio * binary.boxes;
+bool auto_prefers_wide(const BvhEstimate& binary) {
+    return binary.nodes >= kAutoWideMinBinaryNodes;
 }
 
 std::string describe(const BvhEstimate& e) {

@@ -27,11 +27,13 @@ struct BvhEstimate {
 // `scene`: the scene the BVH was built for (its instances' meshes).
 BvhEstimate estimate_bvh_work(const BvhBuild& bvh, const FlatScene& scene);
 
-// Wide where its child-box evaluations per ray are at most kAutoBoxRatio times binary's: on the
-// H200 the traversal is bound by instructions, and the box evaluations are what the wide
-// layout adds (docs/gpu.md).
-constexpr double kAutoBoxRatio = 1.5;
-bool auto_prefers_wide(const BvhEstimate& wide, const BvhEstimate& binary);
+// Wide where the binary tree's traversal is long: at least kAutoWideMinBinaryNodes node visits
+// per ray. A wide node replaces about three binary visits (a dependent load and a stack entry
+// each) with eight box tests; the saved visits pay for the tests only in a deep tree, and on
+// the H200, whose traversal is bound by instructions, not in one of a few dozen triangles or a
+// handful of instances. A heuristic fitted to fifteen scenes (docs/gpu.md, "Choosing a layout").
+constexpr double kAutoWideMinBinaryNodes = 20;
+bool auto_prefers_wide(const BvhEstimate& binary);
 
 // "nodes N boxes B triangles T instances I", for the render statistics.
 std::string describe(const BvhEstimate& e);
