@@ -38,7 +38,7 @@ while (($#)); do
 done
 
 tp="$bundle/bin/twinpath"
-scenes=("$bundle"/scenes/*.json)
+scenes=("$bundle"/scenes/*.json "$bundle"/scenes/*.gltf)
 mkdir -p "$out/renders" "$out/compare" "$out/logs"
 summary="$out/summary.txt"
 : >"$summary"
@@ -62,7 +62,7 @@ cp "$out/logs/info.log" "$out/info.json"
 
 modes=(cpu compute pipeline)
 for scene in "${scenes[@]}"; do
-  name=$(basename "$scene" .json)
+  name=$(basename "${scene%.*}")
   seed=1
   for mode in "${modes[@]}"; do
     backend=(--backend vulkan --vk-mode "$mode")
@@ -82,7 +82,7 @@ done
 
 if [[ -n $layer ]]; then
   for scene in "${scenes[@]}"; do
-    name=$(basename "$scene" .json)
+    name=$(basename "${scene%.*}")
     for mode in compute pipeline; do
       expect_ok "validation_${name}_${mode}" env TWINPATH_VALIDATION=1 VK_LAYER_PATH="$layer" \
         LD_LIBRARY_PATH="$layer:${LD_LIBRARY_PATH:-}" "$tp" render "$scene" --backend vulkan \

@@ -14,7 +14,8 @@ dest=$build/twinpath-bundle
 rm -rf "$dest" "$build/twinpath-bundle.tar.xz"
 mkdir -p "$dest/bin" "$dest/lib" "$dest/scenes"
 cp "$build/bin/twinpath" "$dest/bin/"
-cp scenes/*.json "$dest/scenes/"
+# Every bundled scene: the JSON ones and the glTF example (self-contained: data URIs).
+cp scenes/*.json scenes/*.gltf "$dest/scenes/"
 
 # Libraries the node provides itself: the C runtime, the C++ runtime and the Vulkan loader.
 system='^(linux-vdso|ld-linux|libc|libm|libdl|libpthread|librt|libstdc\+\+|libgcc_s|libvulkan)\.so'
