@@ -53,8 +53,9 @@ fs::path script(const fs::path& dir, const std::string& text) {
 // most one code value, and only for the rare channel that close to a boundary. `flags` go to
 // the render as they went to the window (none: both take the default sampler).
 void check_matches_render(const fs::path& dir, const std::string& shot, uint32_t spp,
-                          const std::string& flags = "") {
-    const auto r = run(tp::test::twinpath("render cornell --backend vulkan --width 40 --height 30 "
+                          const std::string& flags = "", const std::string& scene = "cornell") {
+    const auto r = run(tp::test::twinpath("render " + scene +
+                                          " --backend vulkan --width 40 --height 30 "
                                           "--seed 7 " +
                                           flags + " --spp " + std::to_string(spp) + " -o " +
                                           shell_quote((dir / "r.exr").string()) + " --png " +
@@ -115,6 +116,19 @@ TEST_CASE("view --sampler sobol shows render --sampler sobol --png", "[view]") {
     INFO(v.out);
     REQUIRE(v.exit_code == 0);
     check_matches_render(dir, "shot.png", 11, "--sampler sobol");
+}
+
+// view reads its scene through the same loader as render: a glTF scene opens with its first
+// camera, its materials mapped as for render (docs/scene-format.md).
+TEST_CASE("view opens a glTF scene as render does", "[view]") {
+    const fs::path dir = tp::test::temp_dir("view-gltf");
+    const auto v =
+        run("cd " + shell_quote(dir.string()) + " && env -u DISPLAY -u WAYLAND_DISPLAY " +
+            tp::test::twinpath("view gltf_materials --headless --width 40 --height 30 --seed 7 "
+                               "--frames 4 --spp-per-frame 1 --screenshot shot.png"));
+    INFO(v.out);
+    REQUIRE(v.exit_code == 0);
+    check_matches_render(dir, "shot.png", 4, "", "gltf_materials");
 }
 
 TEST_CASE("a scripted camera move restarts the accumulation; S saves EXR and PNG", "[view]") {
