@@ -39,14 +39,19 @@ const uint BINDING_AOV = 18u;        // PixelAov[width * height] (debug variant 
 const uint BINDING_SAMPLES = 19u;    // vec4[]: one batch's sample estimates, by work item
 const uint BINDING_COUNT = 20u;
 
-// ---- specialization constants (shaders/features.glsl) ---------------------------------------
+// ---- specialization constants (shaders/features.glsl, shaders/render_items.glsl) -------------
 const uint SPEC_SCENE_FEATURES = 0u; // uint: the FEATURE_* mask the path loop is compiled for
+const uint SPEC_ITEM_SCHEDULE = 1u;  // uint: ITEM_SCHEDULE_*, how invocations take work items
+
+// How the render invocations take the dispatch's work items (render_items.glsl).
+const uint ITEM_SCHEDULE_COUNTER = 0u; // from a counter, a new one when a path ends (regeneration)
+const uint ITEM_SCHEDULE_STRIDED = 1u; // invocation i of n: items i, i + n, i + 2n, ...
 
 // ---- push constants of one dispatch ----------------------------------------------------------
 // The dispatch covers rows [row_begin, row_end) of the image, every column, and samples
 // [sample_begin, sample_begin + sample_count) of each of those pixels: item_count work items
 // (batch_item_count), each one sample of one pixel (item_pixel), which the render shader's
-// invocations take from a counter in any order and the resolve pass sums in sample order.
+// invocations take in any order (ITEM_SCHEDULE_*) and the resolve pass sums in sample order.
 // Each accumulator slot of a pixel continues from max(next_sample, sample_begin) (PixelAccum),
 // rounded up to the slot's residue class: next_sample is already the first index of that class
 // at or after sample_begin, unless a dispatch of this batch was cut short (render_items.glsl, loop
@@ -61,11 +66,6 @@ struct BatchParams {
     uint env_table_size;   // entries of the environment-map pixel table (0: none)
     uint probe_iterations; // LOOP_PROBE_ITERATIONS (shaders/render_items.glsl)
     uint item_count;       // batch_item_count of the rows and samples above
-    // Items an invocation takes at most: all it can where the launch keeps the device full
-    // and no more (render_invocations), else ceil(item_count / invocations), so that on a
-    // device that runs invocations one after another (lavapipe) every invocation traces its
-    // share instead of the first ones taking all.
-    uint items_per_invocation;
     // Marks the batch's estimates in the sample buffer: an item whose slot carries another tag
     // is not traced yet (a batch takes a new tag; its repeated dispatches keep it).
     uint sample_tag;
@@ -152,7 +152,7 @@ const uint RENDER_GROUP_SIZE = 64u; // render invocations per workgroup (compute
 const uint RESOLVE_GROUP_SIZE = 64u;
 
 #ifdef __cplusplus
-static_assert(sizeof(BatchParams) == 40, "BatchParams layout");
+static_assert(sizeof(BatchParams) == 36, "BatchParams layout");
 static_assert(sizeof(PixelAccum) == 56 && offsetof(PixelAccum, next_sample) == 52,
               "PixelAccum layout");
 #endif

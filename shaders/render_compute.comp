@@ -30,5 +30,5 @@ void main() {
         return;
     }
 #endif
-    render_items();
+    render_items(gl_GlobalInvocationID.x, gl_NumWorkGroups.x * gl_WorkGroupSize.x);
 }

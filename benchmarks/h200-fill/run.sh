@@ -2,7 +2,7 @@
 # Device run for issue 34: Mrays/s of the same renders at 256x256 and 1920x1080 with the bundle
 # of 01f88eb ("base") and the bundle under test, whose variants are named by extra render
 # arguments (VARIANTS below), in compute and pipeline mode. Run from the repository root on the
-# GPU machine with the bundles and assets carried in .carry/34:
+# GPU machine with the bundles and assets carried in .carry/34 (or $CARRY; NEWS below):
 #   .carry/34/base.tar.xz, .carry/34/new.tar.xz   (scripts/make_gpu_bundle.sh of each commit)
 #   .carry/34/assets/{bunny,buddha}/...           (from ../shared/assets)
 #   .carry/34/scenes/{bunny,buddhas}.json         (bench catalogue scenes, @ASSETS@ for the path)
@@ -12,8 +12,11 @@
 set -uo pipefail
 for f in .gl/*.deb; do dpkg -x "$f" /; done; ldconfig
 export VK_DRIVER_FILES=/usr/local/nvidia/share/vulkan/icd.d/nvidia_icd.json
-c=.carry/34
-for b in base new; do mkdir -p /tmp/$b && tar -C /tmp/$b -xJf $c/$b.tar.xz; done
+c=${CARRY:-.carry/34}
+# The builds under test: $c/NAME.tar.xz for each NAME (rows named by the variant, prefixed with
+# NAME unless it is the one default build, `new`).
+NEWS=${NEWS:-new}
+for b in base $NEWS; do mkdir -p /tmp/$b && tar -C /tmp/$b -xJf $c/$b.tar.xz; done
 mkdir -p /tmp/scenes
 for s in $c/scenes/*.json; do sed "s#@ASSETS@#$PWD/$c/assets#g" "$s" > /tmp/scenes/$(basename "$s"); done
 nvidia-smi --query-gpu=name,driver_version --format=csv,noheader | tee $OUT/device.txt
@@ -22,7 +25,7 @@ scene() {
   case $1 in
     bunny_obj) echo $PWD/$c/assets/bunny/stanford-bunny.obj ;;
     buddha_obj) echo $PWD/$c/assets/buddha/happy_buddha_112k.obj ;;
-    *) [ -f /tmp/scenes/$1.json ] && echo /tmp/scenes/$1.json || echo /tmp/new/twinpath-bundle/scenes/$1.json ;;
+    *) [ -f /tmp/scenes/$1.json ] && echo /tmp/scenes/$1.json || echo /tmp/base/twinpath-bundle/scenes/$1.json ;;
   esac
 }
 SCENES=${SCENES:-"cornell cornell_glossy cornell_spheres spheres furnace bunny_obj buddha_obj"}
@@ -59,7 +62,12 @@ for round in $(seq $ROUNDS); do
         for m in $MODES; do
           r $round base "" $sc $d ${sz%:*} ${sz#*:} $m base
           vs=$VARIANTS; [ $m = pipeline ] && vs=$VARIANTS_PIPELINE
-          for v in $vs; do r $round new "${v#*=}" $sc $d ${sz%:*} ${sz#*:} $m "${v%%=*}"; done
+          for nb in $NEWS; do
+            for v in $vs; do
+              n=${v%%=*}; [ "$nb" = new ] || n=$nb$n
+              r $round $nb "${v#*=}" $sc $d ${sz%:*} ${sz#*:} $m "$n"
+            done
+          done
         done
       done
     done

@@ -64,8 +64,9 @@ TEST_CASE("a pixel's sums do not depend on how its samples are split into batche
 }
 
 // The same film whether every sample has its own invocation (lavapipe's default: it reports no
-// resident count) or 64 invocations share all of a launch's samples, each tracing hundreds in
-// whatever order the counter hands them out (the persistent launches of a GPU that reports its
+// resident count, so the shader is specialized to the strided schedule) or 64 invocations share
+// all of a launch's samples, each tracing hundreds in whatever order the counter hands them out
+// (the counter schedule with path regeneration: the persistent launches of a GPU that reports its
 // resident count). On lavapipe the long-lived invocations also run out of loop budget, so
 // launches are cut short and repeated (each repetition tracing only what is left).
 TEST_CASE("a pixel's sums do not depend on which invocations traced its samples", "[gpu]") {

@@ -14,6 +14,7 @@
 #include "vulkan_rt/device/vk_error.h"
 #include "vulkan_rt/renderer/batch_planner.h"
 #include "vulkan_rt/renderer/batch_session.h"
+#include "vulkan_rt/renderer/item_schedule.h"
 
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>
@@ -195,6 +196,23 @@ TEST_CASE("render launches: one invocation per item unless the device keeps fewe
     CHECK(BatchSession::render_invocations(1u << 24, 270336) == 270336);
     CHECK(BatchSession::render_invocations(uint64_t(1) << 30, 0) == BatchSession::kMaxInvocations);
     CHECK(BatchSession::render_invocations(0, 0) == 1);
+}
+
+TEST_CASE("item schedule: regeneration where a launch keeps a resident count, else strided",
+          "[gpu]") {
+    DeviceInfo lavapipe; // says nothing of residency
+    DeviceInfo h200;
+    h200.caps.resident_invocations = 270336;
+    CHECK(resident_invocations(lavapipe, 0) == 0);
+    CHECK(resident_invocations(lavapipe, 64) == 64);
+    CHECK(resident_invocations(h200, 0) == 270336);
+    CHECK(resident_invocations(h200, 1024) == 1024);
+    CHECK(item_schedule(0) == ITEM_SCHEDULE_STRIDED);
+    CHECK(item_schedule(64) == ITEM_SCHEDULE_COUNTER);
+    CHECK(item_schedule(270336) == ITEM_SCHEDULE_COUNTER);
+    CHECK(render_item_schedule(lavapipe, 0) == ITEM_SCHEDULE_STRIDED);
+    CHECK(render_item_schedule(lavapipe, 64) == ITEM_SCHEDULE_COUNTER);
+    CHECK(render_item_schedule(h200, 0) == ITEM_SCHEDULE_COUNTER);
 }
 
 namespace {

@@ -3,6 +3,7 @@
 #include "scene/features.h"
 #include "vulkan_rt/accel/bvh_builder.h"
 #include "vulkan_rt/device/compute_program.h"
+#include "vulkan_rt/renderer/item_schedule.h"
 #include "vulkan_rt/renderer/render_loop.h"
 #include "vulkan_rt/renderer/scene_buffers.h"
 
@@ -38,21 +39,22 @@ ComputeModules compute_modules(BvhLayout layout) {
 class ComputeTracer : public Tracer {
   public:
     // `debug`: also build the debug variant (record_debug_launch).
-    // `features`: the feature mask the render shader is specialized to (shared/features.h).
-    ComputeTracer(const VulkanContext& ctx, const BvhBuild& bvh, bool debug, uint32_t features)
-        : ComputeTracer(ctx, bvh, debug, features, compute_modules(bvh.layout)) {}
+    // `constants`: what the render shader is specialized to (specialization.h).
+    ComputeTracer(const VulkanContext& ctx, const BvhBuild& bvh, bool debug,
+                  const RenderConstants& constants)
+        : ComputeTracer(ctx, bvh, debug, constants, compute_modules(bvh.layout)) {}
 
-    ComputeTracer(const VulkanContext& ctx, const BvhBuild& bvh, bool debug, uint32_t features,
-                  const ComputeModules& modules)
+    ComputeTracer(const VulkanContext& ctx, const BvhBuild& bvh, bool debug,
+                  const RenderConstants& constants, const ComputeModules& modules)
         : bvh_(upload_bvh(ctx, bvh)), top_root_(bvh.top_root),
-          program_(ctx, modules.spirv, modules.bytes, BINDING_COUNT, sizeof(BatchParams), features,
+          program_(ctx, modules.spirv, modules.bytes, BINDING_COUNT, sizeof(BatchParams), constants,
                    true) {
         if (debug) {
             const std::vector<uint32_t> spirv =
                 debug_spirv(modules.debug_spirv, modules.debug_bytes);
             debug_program_ =
                 std::make_unique<ComputeProgram>(ctx, spirv.data(), spirv.size() * 4, BINDING_COUNT,
-                                                 sizeof(BatchParams), features, false);
+                                                 sizeof(BatchParams), constants, false);
         }
         bind(BINDING_BVH_NODES, bvh_.nodes);
         bind(BINDING_BVH_TRIS, bvh_.triangles);
@@ -114,7 +116,8 @@ ModeSetup prepare_compute(const VulkanContext& ctx, const FlatScene& scene,
     m.buffers =
         upload_scene(ctx, scene, seeded_params(scene, options), bvh.mesh_roots, 0, features);
     auto tracer = std::make_unique<ComputeTracer>(
-        ctx, bvh, options.debug.active() || debug_spirv_overridden(), features);
+        ctx, bvh, options.debug.active() || debug_spirv_overridden(),
+        RenderConstants{features, render_item_schedule(ctx.info(), options.gpu_invocations)});
     add_cache_stats(tracer->cache_use(), m.accel.extra);
     m.accel.pipeline = tracer->report();
     m.tracer = std::move(tracer);

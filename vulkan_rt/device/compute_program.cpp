@@ -20,8 +20,8 @@ std::vector<BindingSlot> storage_slots(uint32_t count) {
 } // namespace
 
 ComputeProgram::ComputeProgram(const VulkanContext& ctx, const uint32_t* spirv, size_t spirv_bytes,
-                               uint32_t binding_count, uint32_t push_bytes, uint32_t features,
-                               bool cached)
+                               uint32_t binding_count, uint32_t push_bytes,
+                               const RenderConstants& constants, bool cached)
     : device_(ctx.device()),
       bindings_(ctx, storage_slots(binding_count), VK_SHADER_STAGE_COMPUTE_BIT, push_bytes) {
     VkShaderModuleCreateInfo mi{};
@@ -37,8 +37,7 @@ ComputeProgram::ComputeProgram(const VulkanContext& ctx, const uint32_t* spirv, 
     ci.stage.module = module;
     ci.stage.pName = "main";
     ci.layout = bindings_.layout();
-    // A shader without the constant ignores it (Vulkan allows unused map entries).
-    const FeatureSpecialization spec(features);
+    const RenderSpecialization spec(constants);
     ci.stage.pSpecializationInfo = &spec.info;
     std::unique_ptr<PipelineCache> cache;
     try {

@@ -1,6 +1,6 @@
 // A compute pipeline from embedded SPIR-V whose descriptor set 0 is `binding_count` storage
 // buffers (bindings 0..n-1) and whose push constants are one block of `push_bytes` bytes.
-// Render shaders get the scene's feature mask as a specialization constant (features.glsl) and
+// Render shaders get their specialization constants (specialization.h) and
 // are compiled through the on-disk pipeline cache (pipeline_cache.h). The driver's report on the
 // pipeline (creation feedback, statistics on request) is kept (pipeline_report.h).
 #pragma once
@@ -11,6 +11,7 @@
 #include "vulkan_rt/device/context.h"
 #include "vulkan_rt/device/pipeline_bindings.h"
 #include "vulkan_rt/device/pipeline_cache.h"
+#include "vulkan_rt/device/specialization.h"
 
 #include <cstddef>
 #include <cstdint>
@@ -19,10 +20,11 @@ namespace tp {
 
 class ComputeProgram {
   public:
-    // Specialized to `features` (shared/features.h; a shader without the constant ignores it)
-    // and, when `cached` (the render shaders), compiled through the pipeline cache on disk.
+    // Specialized to `constants` (specialization.h; a shader without them ignores them) and,
+    // when `cached` (the render shaders), compiled through the pipeline cache on disk.
     ComputeProgram(const VulkanContext& ctx, const uint32_t* spirv, size_t spirv_bytes,
-                   uint32_t binding_count, uint32_t push_bytes, uint32_t features, bool cached);
+                   uint32_t binding_count, uint32_t push_bytes, const RenderConstants& constants,
+                   bool cached);
     ~ComputeProgram();
     ComputeProgram(const ComputeProgram&) = delete;
     ComputeProgram& operator=(const ComputeProgram&) = delete;

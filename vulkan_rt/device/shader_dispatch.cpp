@@ -24,7 +24,7 @@ run_compute_shader(const VulkanContext& ctx, const uint32_t* spirv, size_t spirv
     }
     ComputeProgram program(ctx, spirv, spirv_bytes,
                            uint32_t(device.size() + inputs.size() + outputs.size()), push_bytes,
-                           features, false);
+                           RenderConstants{features}, false);
     std::vector<const Buffer*> bound = device;
     for (const Buffer& b : buffers) bound.push_back(&b);
     for (const Buffer& b : outputs) bound.push_back(&b);

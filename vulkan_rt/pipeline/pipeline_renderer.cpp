@@ -5,6 +5,7 @@
 #include "vulkan_rt/accel/accel_structures.h"
 #include "vulkan_rt/pipeline/rt_functions.h"
 #include "vulkan_rt/pipeline/rt_program.h"
+#include "vulkan_rt/renderer/item_schedule.h"
 #include "vulkan_rt/renderer/render_loop.h"
 
 #include <chrono>
@@ -24,9 +25,10 @@ class PipelineTracer : public Tracer {
   public:
     // `debug`: also build the pipeline with the debug ray-generation shader.
     PipelineTracer(const VulkanContext& ctx, std::unique_ptr<RtFunctions> rt_functions,
-                   std::unique_ptr<AccelStructures> accel, bool debug, uint32_t features)
+                   std::unique_ptr<AccelStructures> accel, bool debug,
+                   const RenderConstants& constants)
         : rt_(std::move(rt_functions)), as_(std::move(accel)),
-          program_(ctx, *rt_, sizeof(BatchParams), nullptr, 0, features, as_->exact_count() > 0) {
+          program_(ctx, *rt_, sizeof(BatchParams), nullptr, 0, constants, as_->exact_count() > 0) {
         const RtFunctions& rt = *rt_;
         const AccelStructures& as = *as_;
         program_.bind_tlas(as.tlas());
@@ -35,7 +37,7 @@ class PipelineTracer : public Tracer {
                 debug_spirv(tp_spirv_render_pipeline_debug, sizeof(tp_spirv_render_pipeline_debug));
             debug_program_ = std::make_unique<RtProgram>(
                 ctx, rt, sizeof(BatchParams), debug_spirv_.data(), debug_spirv_.size() * 4,
-                features, as.exact_count() > 0);
+                constants, as.exact_count() > 0);
             debug_program_->bind_tlas(as.tlas());
         }
     }
@@ -89,7 +91,8 @@ ModeSetup prepare_pipeline(const VulkanContext& ctx, const FlatScene& scene,
     m.accel.extra["exact_meshes"] = std::to_string(as->exact_count());
     auto tracer = std::make_unique<PipelineTracer>(
         ctx, std::move(rt), std::move(as), options.debug.active() || debug_spirv_overridden(),
-        render_feature_mask(scene, options.all_features));
+        RenderConstants{render_feature_mask(scene, options.all_features),
+                        render_item_schedule(ctx.info(), options.gpu_invocations)});
     add_cache_stats(tracer->cache_use(), m.accel.extra);
     m.accel.pipeline = tracer->report();
     m.tracer = std::move(tracer);

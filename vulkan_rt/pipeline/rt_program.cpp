@@ -75,8 +75,9 @@ VkStridedDeviceAddressRegionKHR region(VkDeviceAddress table, const SbtRegion& r
 } // namespace
 
 RtProgram::RtProgram(const VulkanContext& ctx, const RtFunctions& rt, uint32_t push_bytes,
-                     const uint32_t* raygen, size_t raygen_bytes, uint32_t features, bool exact)
-    : ctx_(ctx), rt_(rt), raygen_spirv_(raygen), raygen_bytes_(raygen_bytes), features_(features),
+                     const uint32_t* raygen, size_t raygen_bytes, const RenderConstants& constants,
+                     bool exact)
+    : ctx_(ctx), rt_(rt), raygen_spirv_(raygen), raygen_bytes_(raygen_bytes), constants_(constants),
       hit_groups_(exact ? 2u : 1u),
       bindings_(ctx, pipeline_slots(),
                 VK_SHADER_STAGE_RAYGEN_BIT_KHR |
@@ -108,10 +109,10 @@ void RtProgram::create_pipeline() {
             for (VkShaderModule x : m) vkDestroyShaderModule(d, x, nullptr);
         }
     } guard{device, modules};
-    // The path loop lives in the ray-generation shader: it alone is specialized to the scene's
-    // features. One closest-hit shader serves every material (it only reports the hit), so
-    // there is no per-material hit group to leave out (docs/gpu.md).
-    const FeatureSpecialization spec(features_);
+    // The path loop lives in the ray-generation shader: it alone is specialized (to the scene's
+    // features and the item schedule). One closest-hit shader serves every material (it only
+    // reports the hit), so there is no per-material hit group to leave out (docs/gpu.md).
+    const RenderSpecialization spec(constants_);
     uint64_t shader_hash = fnv1a64(nullptr, 0);
     const uint32_t stage_count = kClosestHitStage + hit_groups_;
     for (uint32_t i = 0; i < stage_count; ++i) {

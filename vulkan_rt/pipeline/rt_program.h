@@ -5,11 +5,11 @@
 #pragma once
 
 #include "render/stats.h"
-#include "shared/features.h"
 #include "vulkan_rt/device/buffer.h"
 #include "vulkan_rt/device/context.h"
 #include "vulkan_rt/device/pipeline_bindings.h"
 #include "vulkan_rt/device/pipeline_cache.h"
+#include "vulkan_rt/device/specialization.h"
 #include "vulkan_rt/pipeline/rt_functions.h"
 
 namespace tp {
@@ -21,7 +21,7 @@ class RtProgram {
     // meshes (AccelStructures::exact_count), which need the procedural hit group.
     RtProgram(const VulkanContext& ctx, const RtFunctions& rt, uint32_t push_bytes,
               const uint32_t* raygen = nullptr, size_t raygen_bytes = 0,
-              uint32_t features = FEATURES_ALL, bool exact = false);
+              const RenderConstants& constants = {}, bool exact = false);
     ~RtProgram();
     RtProgram(const RtProgram&) = delete;
     RtProgram& operator=(const RtProgram&) = delete;
@@ -47,8 +47,8 @@ class RtProgram {
     const RtFunctions& rt_;
     const uint32_t* raygen_spirv_;
     size_t raygen_bytes_;
-    uint32_t features_;   // the ray-generation shader's specialization (features.glsl)
-    uint32_t hit_groups_; // 1, or 2 with the procedural hit group
+    RenderConstants constants_; // the ray-generation shader's specialization
+    uint32_t hit_groups_;       // 1, or 2 with the procedural hit group
     PipelineCacheUse cache_use_;
     PipelineReport report_;
     PipelineBindings bindings_;

@@ -3,6 +3,7 @@
 #include "render/sampler.h"
 #include "util/error.h"
 #include "vulkan_rt/device/barriers.h"
+#include "vulkan_rt/renderer/item_schedule.h"
 
 #include <algorithm>
 #include <cstring>
@@ -43,7 +44,7 @@ BatchSession::BatchSession(const VulkanContext& ctx, const FlatScene& scene, con
            kStorage, false),
       samples_(ctx, kSampleBytes, kStorage, false),
       resolve_(ctx, tp_spirv_resolve, sizeof(tp_spirv_resolve), BINDING_COUNT, sizeof(BatchParams),
-               FEATURES_ALL, false),
+               RenderConstants{}, false),
       timer_(ctx) {
     for (uint32_t slot = 0; slot < sb.slots.size(); ++slot) {
         tracer.bind(slot, sb.slots[slot]);
@@ -228,7 +229,7 @@ uint64_t BatchSession::max_work() const {
 }
 
 uint64_t BatchSession::resident_invocations() const {
-    return invocations_ > 0 ? invocations_ : ctx_.info().caps.resident_invocations;
+    return tp::resident_invocations(ctx_.info(), invocations_);
 }
 
 void BatchSession::read_buffer(const Buffer& src, void* dst, size_t bytes) const {
@@ -248,8 +249,6 @@ void BatchSession::launch() {
     const VkPipelineStageFlags stage = stages();
     const uint64_t resident = resident_invocations();
     const uint32_t invocations = render_invocations(params_.item_count, resident);
-    params_.items_per_invocation =
-        resident > 0 ? params_.item_count : (params_.item_count + invocations - 1) / invocations;
     const uint32_t rows = params_.row_end - params_.row_begin;
     const uint32_t resolve_groups =
         (width_ * rows * slots_ + RESOLVE_GROUP_SIZE - 1) / RESOLVE_GROUP_SIZE;

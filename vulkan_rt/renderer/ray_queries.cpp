@@ -92,7 +92,7 @@ ClosestHits closest_hits_pipeline(const VulkanContext& ctx, const FlatScene& sce
     const SceneBuffers sb = upload_scene(ctx, scene, scene.params, {}, kAccelInputUsage);
     const AccelStructures as(ctx, rt, scene, sb);
     RtProgram program(ctx, rt, sizeof(BatchParams), tp_spirv_closest_hits_rgen,
-                      sizeof(tp_spirv_closest_hits_rgen), FEATURES_ALL, as.exact_count() > 0);
+                      sizeof(tp_spirv_closest_hits_rgen), RenderConstants{}, as.exact_count() > 0);
     program.bind_tlas(as.tlas());
     for (uint32_t b = 0; b < sb.slots.size(); ++b) program.bind(b, sb.slots[b]);
     const Buffer dummy(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);

@@ -46,7 +46,7 @@ ProgressiveRenderer::ProgressiveRenderer(const VulkanContext& ctx, const FlatSce
                   sizeof(uint32_t),
               VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false),
       display_(ctx, tp_spirv_display, sizeof(tp_spirv_display), DISPLAY_BINDING_COUNT,
-               sizeof(DisplayParams), 0, false) {
+               sizeof(DisplayParams), RenderConstants{}, false) {
     display_.bind(DISPLAY_BINDING_ACCUM, session_->accumulators());
     display_.bind(DISPLAY_BINDING_PIXELS, pixels_);
     restart(params_.camera);

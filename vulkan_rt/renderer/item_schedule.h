@@ -1,0 +1,30 @@
+// How many render invocations a launch keeps resident, and so how they take the work items
+// (shaders/render_items.glsl), chosen once per pipeline as a specialization constant: from a
+// counter, with path regeneration, where a launch is sized to what the device keeps resident
+// (fewer invocations than items, each taking items until none is left); invocation i of n
+// tracing items i, i + n, ... where the count is unknown and a launch has one invocation per
+// item, so that a path never ends with another waiting (docs/gpu.md, "Work items").
+#pragma once
+
+#include "shaders/interface.h"
+#include "vulkan_rt/device/device_info.h"
+
+#include <cstdint>
+
+namespace tp {
+
+// `asked`: RenderOptions::gpu_invocations (0: the device's count, 0 where it does not say).
+inline uint64_t resident_invocations(const DeviceInfo& device, uint32_t asked) {
+    return asked > 0 ? asked : device.caps.resident_invocations;
+}
+
+inline uint32_t item_schedule(uint64_t resident) {
+    return resident > 0 ? ITEM_SCHEDULE_COUNTER : ITEM_SCHEDULE_STRIDED;
+}
+
+// The schedule of a render on `device` with RenderOptions::gpu_invocations `asked`.
+inline uint32_t render_item_schedule(const DeviceInfo& device, uint32_t asked) {
+    return item_schedule(resident_invocations(device, asked));
+}
+
+} // namespace tp
