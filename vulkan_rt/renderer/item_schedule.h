@@ -1,9 +1,10 @@
-// How many render invocations a launch keeps resident, and so how they take the work items
-// (shaders/render_items.glsl), chosen once per pipeline as a specialization constant: from a
-// counter, with path regeneration, where a launch is sized to what the device keeps resident
-// (fewer invocations than items, each taking items until none is left); invocation i of n
-// tracing items i, i + n, ... where the count is unknown and a launch has one invocation per
-// item, so that a path never ends with another waiting (docs/gpu.md, "Work items").
+// How many render invocations a launch keeps resident, and so which loop the render shader
+// runs (shaders/render_items.glsl; a specialization constant, fixed per pipeline): the counter
+// with path regeneration where a launch is sized to a resident count (fewer invocations than
+// items, each taking items until none is left); invocation i of n tracing items i, i + n, ...
+// where the count is unknown and a launch has one invocation per item, so that no invocation
+// pays for votes and atomics that would never hand it a second item (docs/gpu.md, "Item
+// schedule"). BatchSession sizes its launches from the same resident count.
 #pragma once
 
 #include "shaders/interface.h"
