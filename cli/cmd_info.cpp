@@ -1,7 +1,8 @@
 // twinpath info [--json]: what this build can do and which devices it sees.
-// twinpath info SCENE [--json]: what the scene holds and which features it uses (issue 9:
-// the features the renderers specialize their path loop to), each material as the engines see
-// it and, for glTF, what the file gives that is not rendered (issue 37), and the load time.
+// twinpath info SCENE [--json]: what the scene holds and which features it uses (the
+// scene features the renderers specialize their path loop to, docs/gpu.md), each material as the
+// engines see it and, for glTF, what the file gives that is not rendered (docs/scene-format.md),
+// and the load time.
 #include "commands.h"
 
 #include "scene/features.h"

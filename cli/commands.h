@@ -1,4 +1,4 @@
-// The twinpath subcommands (DESIGN.md, "Command line"). Each registers its options on the
+// The twinpath subcommands (docs/design.md, "Command line"). Each registers its options on the
 // CLI11 app and returns the function that runs it; that function returns the exit code.
 #pragma once
 

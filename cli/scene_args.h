@@ -1,4 +1,4 @@
-// The scene, film, camera and device flags that `render` and `view` share (DESIGN.md,
+// The scene, film, camera and device flags that `render` and `view` share (docs/design.md,
 // "Command line"), and the scene they describe.
 #pragma once
 

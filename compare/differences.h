@@ -1,6 +1,6 @@
 // Per pixel-channel difference d = a - b, the variance of that difference and the
 // Welch-Satterthwaite degrees of freedom, shared by the pixel test, the tile test and the
-// report. Pixels are independent (every random number depends on its own pixel, DESIGN.md),
+// report. Pixels are independent (every random number depends on its own pixel, docs/design.md),
 // so these are the only second moments the tests need.
 //
 // Unequal sample counts: the image with fewer samples borrows the other's per-sample variance

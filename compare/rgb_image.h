@@ -1,5 +1,5 @@
 // One rendering as compare sees it: the R, G, B means and, when the file has them, the
-// variance.R/G/B channels (variance of the mean, DESIGN.md "Image output"), in double.
+// variance.R/G/B channels (variance of the mean, docs/design.md "Image output"), in double.
 // Loading validates everything the statistics rely on; every failure is an InputError that
 // names the file (exit 2).
 #pragma once

@@ -85,25 +85,27 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
         const uint32_t s0 = K + done,
                        s1 = K + std::min(options.next_stop(done, scene.spp), done + pass_spp);
         tbb::combinable<TileCounters> counters;
-        tbb::parallel_for(
-            tbb::blocked_range<uint32_t>(0, tiles_x * tiles_y),
-            [&](const tbb::blocked_range<uint32_t>& r) {
-                TileCounters& c = counters.local();
-                for (uint32_t tile = r.begin(); tile != r.end(); ++tile) {
-                    const uint32_t x0 = (tile % tiles_x) * kTile, y0 = (tile / tiles_x) * kTile;
-                    for (uint32_t y = y0; y < std::min(y0 + kTile, H); ++y)
-                        for (uint32_t x = x0; x < std::min(x0 + kTile, W); ++x)
-                            for (uint32_t s = s0; s < s1; ++s) {
-                                const vec3 L = view ? views.radiance(x, y, s)
-                                                    : integrator.radiance(x, y, s, c.rays);
-                                if (!is_finite3(L)) {
-                                    ++c.nan; // counted and dropped (DESIGN.md, "No silent NaN")
-                                    continue;
-                                }
-                                result.film.add_sample(y * W + x, glm::dvec3(L), s);
-                            }
-                }
-            });
+        tbb::parallel_for(tbb::blocked_range<uint32_t>(0, tiles_x * tiles_y),
+                          [&](const tbb::blocked_range<uint32_t>& r) {
+                              TileCounters& c = counters.local();
+                              for (uint32_t tile = r.begin(); tile != r.end(); ++tile) {
+                                  const uint32_t x0 = (tile % tiles_x) * kTile,
+                                                 y0 = (tile / tiles_x) * kTile;
+                                  for (uint32_t y = y0; y < std::min(y0 + kTile, H); ++y)
+                                      for (uint32_t x = x0; x < std::min(x0 + kTile, W); ++x)
+                                          for (uint32_t s = s0; s < s1; ++s) {
+                                              const vec3 L =
+                                                  view ? views.radiance(x, y, s)
+                                                       : integrator.radiance(x, y, s, c.rays);
+                                              if (!is_finite3(L)) {
+                                                  ++c.nan; // counted and dropped (docs/design.md,
+                                                           // "No silent NaN")
+                                                  continue;
+                                              }
+                                              result.film.add_sample(y * W + x, glm::dvec3(L), s);
+                                          }
+                              }
+                          });
         counters.combine_each([&](const TileCounters& c) {
             st.rays += c.rays;
             st.nan_samples += c.nan;

@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# The GPU machine's checks of the Vulkan backend (issue 6, docs/gpu.md "Running on a GPU
+# The GPU machine's checks of the Vulkan backend (docs/gpu.md "Running on a GPU
 # machine"), run from an unpacked gpu bundle on a node that has only a driver:
 #   1. `twinpath info --json`: the devices and the modes each offers;
 #   2. every bundled scene rendered on the CPU, in compute mode and in pipeline mode with

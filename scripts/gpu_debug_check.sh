@@ -1,5 +1,5 @@
 #!/usr/bin/env bash
-# Path logs and AOVs in pipeline mode (issue 7, docs/debugging.md), for the GPU machine: lavapipe
+# Path logs and AOVs in pipeline mode (docs/debugging.md), for the GPU machine: lavapipe
 # cannot run the ray-tracing pipeline, so CI only compiles and validates its debug stage.
 # For every bundled scene and a few pixels (centre, corners, a quarter in), the pipeline-mode
 # path log is held against the CPU's and the compute mode's with `twinpath pathdiff`, and the

@@ -3,7 +3,7 @@
 # have only a driver: bin/twinpath, the shared libraries it needs beyond glibc, libstdc++,
 # libm, libgcc_s and the Vulkan loader (in lib/, found through the executable's RPATH), and
 # the bundled scenes. Output: build-gpu-bundle/twinpath-bundle/ and twinpath-bundle.tar.xz.
-# Limits (issue 6): 60 MB unpacked, 20 MB compressed.
+# Limits (small enough to carry to a GPU node with the scene): 60 MB unpacked, 20 MB compressed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake --preset gpu-bundle >/dev/null

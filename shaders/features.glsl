@@ -1,4 +1,4 @@
-// The feature mask of the render shaders (issue 9; shared/features.h) as a specialization
+// The feature mask of the render shaders (shared/features.h) as a specialization
 // constant: the host sets it to the scene's mask when it creates the pipeline
 // (vulkan_rt/device/specialization.h), so the driver compiles a path loop without the code of the
 // features the scene lacks; the default, every feature, is what `--features all` runs and what

@@ -3,7 +3,7 @@
 // film batch, interface.h) adds the batch's samples of its residue class to its double-precision
 // sums, read from the sample buffer in increasing sample order, so that a slot's samples are
 // added in sample order however the render was split into dispatches and whichever invocation
-// traced them. NaN/Inf samples are counted and dropped (DESIGN.md, "No silent NaN").
+// traced them. NaN/Inf samples are counted and dropped (docs/design.md, "No silent NaN").
 //
 // Precision: each sample is added to a double sum and sum of squares, so after n samples the
 // relative rounding error of either is below n * 2^-53 (1e-10 at n = 10^6) and the variance

@@ -1,4 +1,4 @@
-// The position group (issue 23, item 2): a scene moved together with its camera renders the same
+// The position group: a scene moved together with its camera renders the same
 // image wherever it sits. The description keeps positions in double and flatten() rounds to
 // float only after subtracting the camera's eye (scene/flatten.h, FlatScene::origin), so when
 // every number of the description survives the move exactly ((x + d) - d == x), both scenes

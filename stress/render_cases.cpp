@@ -497,7 +497,7 @@ std::vector<CaseResult> light_cases(const Engine& e, const Size& s) {
                        add_material(sc, "bright", emitter(vec3(1e4f))), I4);
             expect_consistent(c, render(e, flat(base), 206), render(e, flat(sc), 207), s.alpha);
         }));
-    // The ceiling light turned to face up (emission leaves the front face only, DESIGN.md):
+    // The ceiling light turned to face up (emission leaves the front face only, docs/design.md):
     // it lights nothing the camera sees, so the image equals the one with a black quad there.
     out.push_back(timed(make_case("lights", "emitter facing away", e,
                                   "consistent with a black (non-emitting) quad in its place"),

@@ -1,4 +1,4 @@
-// The numerical stress suite (issue 8, docs/stress.md): cases whose expected outcome follows
+// The numerical stress suite (docs/stress.md): cases whose expected outcome follows
 // from the mathematics of the estimator, each run on one backend/mode and reduced to a verdict
 // and the NaN/Inf counts it met. The CI tests (tests/stress, label `stress`) run them at a small
 // size; `twinpath bench --stress` runs them larger on every backend and mode and writes a report.

@@ -1,5 +1,5 @@
 // OpenEXR files, through the OpenEXR library (present in every build, the GPU bundle too).
-// Renders are written as DESIGN.md says: float32 R, G, B = per-pixel mean, variance.R/G/B =
+// Renders are written as docs/design.md says: float32 R, G, B = per-pixel mean, variance.R/G/B =
 // variance of that mean, optional AOV layers, and twinpath:* header attributes.
 #pragma once
 

@@ -24,7 +24,7 @@
 namespace tp {
 
 // What a batch-estimated film writes besides R, G, B, variance.R/G/B and
-// sample_variance.R/G/B (DESIGN.md, "Files"; docs/sampling.md, "What the file keeps"):
+// sample_variance.R/G/B (docs/design.md, "Files"; docs/sampling.md, "What the file keeps"):
 // - lean (the default): nothing more, and sample_variance.* rounded to 11 significant bits:
 //   what `compare` reads, at 1.4x the bytes of a random-sampler file;
 // - full: sample_variance.* in float32 and the mean of every batch, batchB.R/G/B, which
@@ -43,7 +43,7 @@ const char* film_layout_name(FilmLayout layout);
 float lean_sample_variance(double s2);
 
 // The channels a batch-estimated film writes besides R, G, B and variance.R/G/B
-// (DESIGN.md, "Files"; docs/sampling.md): the unbiased sample variance of the pixel's samples,
+// (docs/design.md, "Files"; docs/sampling.md): the unbiased sample variance of the pixel's samples,
 // an estimate of the variance of one sample's marginal distribution, and the mean of each
 // batch. c is 0, 1, 2 for R, G, B.
 std::string sample_variance_channel(int c);       // "sample_variance.R"
@@ -80,7 +80,7 @@ class Film {
     // pixels that have an estimate, 0 when none has.
     uint64_t variance_dof() const;
 
-    // R, G, B and variance.R/G/B channels, float32 (DESIGN.md, "Files"), the estimator in
+    // R, G, B and variance.R/G/B channels, float32 (docs/design.md, "Files"), the estimator in
     // twinpath:variance_estimator ("samples" or "batches") and the layout in twinpath:film; for
     // batches also twinpath:variance_dof and sample_variance.R/G/B, so that compare can borrow
     // a per-sample variance, and in the full layout batchB.R/G/B for B < K, so that merge can

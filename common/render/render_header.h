@@ -1,4 +1,4 @@
-// The twinpath:* header attributes of a render's EXR (DESIGN.md, "Files"; docs/farm.md): what
+// The twinpath:* header attributes of a render's EXR (docs/design.md, "Files"; docs/farm.md): what
 // was rendered, how, and which samples, so that `twinpath merge` can combine parts and refuse
 // parts that are not of one render.
 #pragma once

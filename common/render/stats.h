@@ -1,4 +1,4 @@
-// Render statistics (`--stats file.json`, DESIGN.md): what ran, how long, how many rays of
+// Render statistics (`--stats file.json`, docs/design.md): what ran, how long, how many rays of
 // each kind, and how many samples were dropped as NaN/Inf.
 #pragma once
 

@@ -1,4 +1,4 @@
-// Scene feature analysis (issue 9): which of the features of shared/features.h a flattened
+// Scene feature analysis: which of the features of shared/features.h a flattened
 // scene uses, so that each engine can render it with a path loop compiled for exactly those.
 // Pure: reads the FlatScene, nothing else.
 #pragma once

@@ -13,7 +13,7 @@
 
 namespace tp {
 
-// Command-line overrides of the scene's own settings (DESIGN.md, command line).
+// Command-line overrides of the scene's own settings (docs/design.md, command line).
 struct SceneOverrides {
     std::optional<uint32_t> width, height, spp, max_depth, min_depth;
     std::optional<glm::dvec3> eye, target; // positions: double, as the scene keeps them

@@ -1,8 +1,8 @@
 // Wavefront OBJ + MTL. The parser is our own and strict: tinyobjloader (Debian's) reads a
 // malformed number such as "1 zz 0" as 0 without an error, and every malformed line here must
-// fail with its file and line number (DESIGN.md, "Files").
+// fail with its file and line number (docs/design.md, "Files").
 //
-// MTL mapping (DESIGN.md): Kd diffuse, Ks + Ns Phong specular, Ke emission, illum 3 mirror
+// MTL mapping (docs/design.md): Kd diffuse, Ks + Ns Phong specular, Ke emission, illum 3 mirror
 // (Ks tint), illum 7 glass (Ni index of refraction, Tf tint), map_Kd texture (multiplies Kd).
 #pragma once
 

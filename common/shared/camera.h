@@ -2,7 +2,7 @@
 // side * u + tan(theta) * v * up + d with theta = FOVy / 2; that is exact only for square images.
 // Generalised: the horizontal half-extent of the image plane at distance 1 is
 // tan(theta) * aspect, so r = d + u tan(theta) aspect side + v tan(theta) up, with v growing
-// upwards while pixel y grows downwards (DESIGN.md: pixel (x, y) with y down).
+// upwards while pixel y grows downwards (docs/design.md: pixel (x, y) with y down).
 #ifndef TP_SHARED_CAMERA_H
 #define TP_SHARED_CAMERA_H
 

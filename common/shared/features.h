@@ -1,4 +1,4 @@
-// Scene features (issue 9): which materials, lights and environment a scene uses, as bits of
+// Scene features: which materials, lights and environment a scene uses, as bits of
 // one mask, and the integrator's dispatch over materials and lights restricted to that mask.
 // common/scene/features.h computes the mask of a FlatScene. Each engine compiles its path loop
 // for a mask: the CPU engine instantiates a template on some bits (cpu_ref/integrator.cpp), the

@@ -2,7 +2,7 @@
 // In C++ the GLSL vocabulary (vec3, uint, dot, mix, ...) is aliased to GLM inside namespace tp;
 // in GLSL the C++-only words used by the headers are defined away.
 //
-// Rules for every file that includes this (DESIGN.md, "The shared headers"):
+// Rules for every file that includes this (docs/design.md, "The shared headers"):
 // no templates, references, default arguments, enums, recursion or pointers; float literals
 // carry `f`, unsigned ones `u`; out/inout parameters through OUT()/INOUT(); every function pure.
 #ifndef TP_SHARED_LANG_H

@@ -1,5 +1,5 @@
 // Light sampling for next-event estimation and the light-side pdfs that multiple importance
-// sampling needs. Radiometry follows DESIGN.md: a point light's intensity I (W/sr) arrives as
+// sampling needs. Radiometry follows docs/design.md: a point light's intensity I (W/sr) arrives as
 // I / d^2; a directional light's irradiance E (W/m^2) arrives as E on a surface facing it;
 // triangles and the environment carry radiance. Light *selection* (alias table) is the
 // caller's, so every pdf here is conditional on the light having been chosen.

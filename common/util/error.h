@@ -1,4 +1,4 @@
-// The two kinds of failure the command line reports (DESIGN.md, exit codes):
+// The two kinds of failure the command line reports (docs/design.md, exit codes):
 // InputError -> exit 2 (bad usage or bad input), RuntimeError -> exit 3 (no device, out of
 // memory, device lost). Messages name the file and the line or field where they can.
 #pragma once

@@ -1,9 +1,9 @@
-// SIGINT and SIGTERM during a render (DESIGN.md, exit codes 130 and 143; README, "Interrupting a
-// render"). Until the first pass begins (save_on_interrupt), a signal exits at once with
-// 128 + its number: nothing has been rendered, so nothing is lost. From then on, the first
-// signal asks the render to stop after the pass in flight, so that what was accumulated is
-// written as a valid image; a second signal exits at once. An output being written at that
-// moment is finished first (OutputWriteScope), so no PATH.partial is ever left behind.
+// SIGINT and SIGTERM during a render (docs/design.md, exit codes 130 and 143; README, "Interrupting
+// a render"). Until the first pass begins (save_on_interrupt), a signal exits at once with 128 +
+// its number: nothing has been rendered, so nothing is lost. From then on, the first signal asks
+// the render to stop after the pass in flight, so that what was accumulated is written as a valid
+// image; a second signal exits at once. An output being written at that moment is finished first
+// (OutputWriteScope), so no PATH.partial is ever left behind.
 #pragma once
 
 #include <atomic>

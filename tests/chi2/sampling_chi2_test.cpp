@@ -29,9 +29,9 @@ TEST_CASE("cosine-weighted hemisphere follows cos(theta)/pi", "[chi2]") {
 }
 
 TEST_CASE("Phong lobe sampling follows (n+1)/(2 pi) cos^n", "[chi2]") {
-    // Exponents of issue 2, and n = 0 (a uniform hemisphere: MTL files often say Ns 0). The
-    // chart's rows start at 1 - cos = 0.05 / (n + 1), a twentieth of the lobe's width, so that
-    // even at n = 10^4 some 20 rows lie inside the lobe.
+    // Exponents from 1 to 10^4 (the range of cornell_glossy), and n = 0 (a uniform hemisphere: MTL
+    // files often say Ns 0). The chart's rows start at 1 - cos = 0.05 / (n + 1), a twentieth of the
+    // lobe's width, so that even at n = 10^4 some 20 rows lie inside the lobe.
     for (const float n : {0.0f, 1.0f, 10.0f, 100.0f, 1000.0f, 10000.0f}) {
         DYNAMIC_SECTION("n = " << n) {
             const SphereChart chart = SphereChart::lobe(kZ, 0.05 / (double(n) + 1.0), 48, 64);

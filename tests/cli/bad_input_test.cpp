@@ -1,5 +1,6 @@
-// Every kind of bad input of issue 2 through the real command line: one clear message that names
-// the file and the line or field, exit code 2, and no output file of any kind left behind.
+// Every kind of bad input (docs/design.md, exit codes) through the real command line: one clear
+// message that names the file and the line or field, exit code 2, and no output file of any kind
+// left behind.
 #include "support/gltf_builder.h"
 #include "support/test_paths.h"
 
@@ -689,10 +690,10 @@ TEST_CASE("an unwritable output path is rejected before rendering and nothing is
     fs::remove_all(dir);
 }
 
-// Issue 23, items 1, 8 and 9: messages that named the wrong cause (before: "up parallel to the
-// viewing direction", "camera.eye must be finite", "got -1", "read error"), geometry beyond the
-// float32 range rule (before: rendered, black on the CPU), a bounded quote of the offending text,
-// and repeated JSON keys (before: the last value silently won).
+// Messages that name the real cause (not "up parallel to the viewing direction", "camera.eye
+// must be finite", "got -1" or "read error"), geometry beyond the float32 range rule (which
+// would render black on the CPU), a bounded quote of the offending text, and repeated JSON keys
+// (refused, where a JSON parser would keep the last value silently).
 TEST_CASE("far geometry, huge values and repeated keys name their real cause", "[cli][bad-input]") {
     const std::string far_object = scene_json(kCamera, kMaterials, kMeshes,
                                               R"([{"mesh": "ball", "material": "m"},

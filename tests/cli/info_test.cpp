@@ -1,4 +1,4 @@
-// twinpath info on a glTF file (issue 37): each material with what the mapping of
+// twinpath info on a glTF file (docs/scene-format.md): each material with what the mapping of
 // docs/scene-format.md ("glTF materials") made of it and what it gave that is not rendered, and
 // what else the asset gave that is not rendered, as text and as JSON.
 #include "support/gltf_builder.h"

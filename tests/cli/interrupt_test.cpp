@@ -1,4 +1,4 @@
-// SIGINT and SIGTERM during a render (issue 23, item 5; README, "Interrupting a render"): the
+// SIGINT and SIGTERM during a render (README, "Interrupting a render"): the
 // first signal ends the render after the pass in flight and writes what was accumulated, a valid
 // image whose twinpath:spp says how many samples it holds, then exits 130 or 143; a second
 // signal exits at once and leaves no partial file; a signal before the first pass exits at once.

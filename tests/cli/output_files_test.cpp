@@ -1,7 +1,7 @@
-// The files a command writes (issue 23, items 3, 4, 6 and 7): a device named as an output is
-// written in place and stays a device; a write that fails says why (the system's reason), exits
-// 3 and leaves no partial file or empty report directory; two outputs naming one file, an empty
-// path and NaN option values are usage errors (exit 2).
+// The files a command writes (README, "Using it": every output is checked before any work): a
+// device named as an output is written in place and stays a device; a write that fails says why
+// (the system's reason), exits 3 and leaves no partial file or empty report directory; two outputs
+// naming one file, an empty path and NaN option values are usage errors (exit 2).
 #include "support/test_paths.h"
 
 #include <catch2/catch.hpp>

@@ -1,4 +1,4 @@
-// twinpath render through the command line, on good input: the EXR of DESIGN.md ("Image
+// twinpath render through the command line, on good input: the EXR of docs/design.md ("Image
 // output"), the PNG preview, the statistics JSON, skipped degenerate triangles, auto-framing of
 // a bare OBJ, and the usage errors of the argument parser itself.
 #include "image/exr_io.h"
@@ -24,7 +24,7 @@ std::string bin() {
 
 } // namespace
 
-TEST_CASE("render writes the EXR and PNG and statistics DESIGN.md describes", "[cli]") {
+TEST_CASE("render writes the EXR and PNG and statistics docs/design.md describes", "[cli]") {
     const fs::path dir = tp::test::temp_dir("cli-render");
     const auto r = run(bin() + " render furnace --spp 4 --width 8 --height 6 --seed 9 -o " +
                        shell_quote((dir / "f.exr").string()) + " --png " +
@@ -99,14 +99,14 @@ TEST_CASE("a bare OBJ is framed automatically and lit by a white environment", "
     fs::remove_all(dir);
 }
 
-// Issue 23, item 2: an OBJ whose vertices are written in full double precision 1e4 away, with the
-// camera moved alike by --eye/--target, renders the image and path log of the same scene at the
-// origin for the same seed. Every coordinate is on the grid of 2^-14 (finer than float's 2^-10
-// at 1e4), so each moved number is exact in double and the scene is the same scene exactly; the
-// loaders, --eye/--target and flatten() keep double until the camera is subtracted. Before, the
-// file and the flags were read as floats and meshes stored in their own coordinates, where hit
-// points were interpolated in float: 130 of 256 pixels differed (99 with every coordinate on the
-// grid of 2^-4, which float holds exactly at 1e4).
+// Where a scene sits (docs/stress.md, "Scale and position"): an OBJ whose vertices are written in
+// full double precision 1e4 away, with the camera moved alike by --eye/--target, renders the image
+// and path log of the same scene at the origin for the same seed. Every coordinate is on the grid
+// of 2^-14 (finer than float's 2^-10 at 1e4), so each moved number is exact in double and the scene
+// is the same scene exactly; the loaders, --eye/--target and flatten() keep double until the camera
+// is subtracted. Before, the file and the flags were read as floats and meshes stored in their own
+// coordinates, where hit points were interpolated in float: 130 of 256 pixels differed (99 with
+// every coordinate on the grid of 2^-4, which float holds exactly at 1e4).
 TEST_CASE("a scene moved 1e4 away with its camera renders the same image", "[cli]") {
     const fs::path dir = tp::test::temp_dir("cli-moved");
     std::ofstream(dir / "m.mtl") << "newmtl wall\nKd 0.6 0.5 0.4\nnewmtl lamp\nKe 4 4 4\n";

@@ -1,4 +1,5 @@
-// --exact: the simple channel-by-channel equality that issue 7's AOV comparison builds on.
+// --exact: the simple channel-by-channel equality that the AOV comparison of docs/debugging.md
+// builds on.
 #include "image/exr_io.h"
 #include "support/test_paths.h"
 

@@ -1,6 +1,6 @@
 // Power: differences the test must find. The global test's power is checked against the
 // noncentral chi-square it should follow; the stated detections on real renders are the ones
-// issue 3 names (spp and resolution in each test's name).
+// docs/compare.md, "Power", states (spp and resolution in each test's name).
 #include "rates.h"
 #include "renders.h"
 #include "synthetic.h"

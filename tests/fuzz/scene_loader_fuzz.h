@@ -1,7 +1,7 @@
-// The fuzz target of the scene loaders (issues 23, 37): one input is a JSON scene, an OBJ or an
-// MTL file, or a glTF asset, by its first byte. Loading it and flattening the scene may fail only with InputError
-// or RuntimeError (exit 2 or 3 on the command line); a crash, a hang, another exception or a
-// sanitizer report is a bug.
+// The fuzz target of the scene loaders (docs/fuzzing.md): one input is a JSON scene, an OBJ or an
+// MTL file, or a glTF asset, by its first byte. Loading it and flattening the scene may fail only
+// with InputError or RuntimeError (exit 2 or 3 on the command line); a crash, a hang, another
+// exception or a sanitizer report is a bug.
 #pragma once
 
 #include <cstddef>

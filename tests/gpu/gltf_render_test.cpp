@@ -1,4 +1,4 @@
-// glTF scenes through the command line on both engines (issue 37): the Cornell box as glTF and
+// glTF scenes through the command line on both engines: the Cornell box as glTF and
 // as OBJ (tests/support/cornell_files.h) render the same image bit for bit with the same seed on
 // the CPU and in compute mode, since they flatten to the same floats (unit test "the Cornell box
 // flattens exactly as its OBJ twin") and the paths depend only on those and the seed; and glTF

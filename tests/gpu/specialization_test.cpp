@@ -1,4 +1,4 @@
-// Issue 9 on Vulkan (compute mode; lavapipe in CI): the render shader specialized to each
+// Scene features on Vulkan (compute mode; lavapipe in CI): the render shader specialized to each
 // bundled scene's features, with the one-level BVH where the scene has no instancing, agrees
 // with the all-features shader and its two-level BVH (`twinpath compare`, alpha 0.01,
 // different seeds); and the pipeline cache on disk: the second render of a scene finds

@@ -1,6 +1,6 @@
 # cmake -DGLSLANG=... -DSPIRV_VAL=... -DSPIRV_OPT=... -DSOURCE=shader -DINCLUDES="dir;dir"
 #       -DOUTPUT=x.spv -DFEATURES=<mask> -P
-# The render shader specialized to a feature mask as a driver would see it (issue 9): compiled
+# The render shader specialized to a feature mask as a driver would see it: compiled
 # as the build does, the SPEC_SCENE_FEATURES constant (id 0) set to FEATURES and frozen, then
 # optimized (inlining and dead-code elimination, what drivers do with the constant); both the
 # frozen and the optimized module must pass spirv-val. Prints the optimized size, a proxy for

@@ -1,4 +1,4 @@
-// Determinism (issue 2, CPU backend): the same seed gives a bit-identical image for any thread
+// Determinism (CPU backend): the same seed gives a bit-identical image for any thread
 // count, since every random number is a function of (seed, pixel, sample, dimension) and each
 // pixel's samples are added in order by one thread; a different seed gives a different image.
 // Through the command line and the EXR file, as a user would compare them.

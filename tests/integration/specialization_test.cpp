@@ -1,5 +1,5 @@
-// Issue 9 on the CPU: on every bundled scene the path loop specialized to the scene's features
-// renders what the all-features loop renders. With different seeds the two images must be
+// Scene features on the CPU: on every bundled scene the path loop specialized to the scene's
+// features renders what the all-features loop renders. With different seeds the two images must be
 // consistent under `twinpath compare` (alpha 0.01); with the same seed they follow the same
 // paths with the same random numbers (shared/features.h promises the unrestricted result for
 // every input the mask admits), so they must agree to rounding.

@@ -24,8 +24,8 @@ TEST_CASE("stress: a scene moved by 1e2 to 1e6 on the CPU", "[stress]") {
     require_all(position_cases(cpu_engine(), small_size()));
 }
 
-// Regression (issue 23, item 1): far objects at 1e20 and 1e30 rendered (the Cornell box with its
-// short block at 1e30: every pixel black) where the range rule now names them.
+// Regression (docs/stress.md, "Far and huge objects"): far objects at 1e20 and 1e30 rendered (the
+// Cornell box with its short block at 1e30: every pixel black) where the range rule now names them.
 TEST_CASE("stress: far and huge objects on the CPU", "[stress]") {
     require_all(range_cases(cpu_engine(), small_size()));
 }

@@ -62,7 +62,7 @@ TEST_CASE("stress GPU: scale in compute mode", "[stress][gpu]") {
     require_all(scale_cases(gpu(), gpu_size()));
 }
 
-// Regression (issue 23, item 2): see stress_cpu_test.cpp.
+// Regression (docs/stress.md, "Scale and position"): see stress_cpu_test.cpp.
 TEST_CASE("stress GPU: a scene moved by 1e2 to 1e6 in compute mode", "[stress][gpu]") {
     require_all(position_cases(gpu(), gpu_size()));
 }

@@ -21,7 +21,7 @@
 
 namespace tp::test::chi2 {
 
-// At least 10^6 samples per test (issue 2, "Tests").
+// At least 10^6 samples per test, so that a density error of a few percent in a cell is seen.
 constexpr uint64_t kSamples = 1000000;
 // Pearson's statistic is close to chi-square only when every cell expects >= 5 samples
 // (Cochran's rule, which pbrt-v4 and Mitsuba 3 both use); smaller cells are pooled.

@@ -1,6 +1,6 @@
 // camera.h, the pinhole of thesis eq. 2.48 generalised to any aspect ratio: the centre of the
 // film looks along the view direction, and its edges at +-tan(fov/2) * aspect horizontally and
-// +-tan(fov/2) vertically, with pixel y growing downwards (DESIGN.md, "Camera").
+// +-tan(fov/2) vertically, with pixel y growing downwards (docs/design.md, "Camera").
 #include "shared/camera.h"
 
 #include <catch2/catch.hpp>

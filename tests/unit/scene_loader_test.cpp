@@ -1,5 +1,5 @@
 // What the scene loaders make of good input (bad input is tests/cli/bad_input_test.cpp): the
-// OBJ/MTL statements DESIGN.md maps, JSON transforms and instancing, lights, and what
+// OBJ/MTL statements docs/design.md maps, JSON transforms and instancing, lights, and what
 // flatten() derives from them.
 #include "scene/flatten.h"
 #include "scene/load.h"

@@ -1,6 +1,7 @@
-// Where a scene sits does not change what the engines trace (issue 23, item 2): the description
-// keeps positions in double (scene/scene.h) and flatten() rounds to float only after moving the
-// world next to the camera (FlatScene::origin), each mesh relative to its own lowest corner.
+// Where a scene sits does not change what the engines trace (docs/stress.md, "Scale and position"):
+// the description keeps positions in double (scene/scene.h) and flatten() rounds to float only
+// after moving the world next to the camera (FlatScene::origin), each mesh relative to its own
+// lowest corner.
 #include "scene/flatten.h"
 #include "scene/generators.h"
 #include "scene/load.h"
