@@ -11,10 +11,6 @@
 
 namespace tp {
 
-float srgb_to_linear(float x) {
-    return x <= 0.04045f ? x / 12.92f : std::pow((x + 0.055f) / 1.055f, 2.4f);
-}
-
 std::vector<uint8_t> tonemap_srgb8(const std::vector<float>& r, const std::vector<float>& g,
                                    const std::vector<float>& b, float exposure_stops) {
     const float scale = std::exp2(exposure_stops);

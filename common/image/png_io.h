@@ -19,6 +19,4 @@ void write_png(const std::string& path, int width, int height, const std::vector
 std::vector<uint8_t> tonemap_srgb8(const std::vector<float>& r, const std::vector<float>& g,
                                    const std::vector<float>& b, float exposure_stops);
 
-float srgb_to_linear(float encoded);
-
 } // namespace tp

@@ -4,6 +4,7 @@
 #include "image/png_io.h"
 #include "util/error.h"
 
+#include <algorithm>
 #include <cmath>
 #include <filesystem>
 
@@ -19,13 +20,14 @@ Texture from_exr(const std::string& path) {
     const ExrImage img = read_exr(path);
     for (const char* c : {"R", "G", "B"})
         if (!img.has(c)) input_error("{}: texture has no {} channel", path, c);
-    Texture t;
-    t.width = uint32_t(img.width);
-    t.height = uint32_t(img.height);
-    t.texels.resize(size_t(t.width) * t.height);
     const auto &r = img.channel("R"), &g = img.channel("G"), &b = img.channel("B");
-    for (size_t i = 0; i < t.texels.size(); ++i) t.texels[i] = vec3(r[i], g[i], b[i]);
-    return t;
+    std::vector<float> rgb(size_t(img.width) * img.height * 3);
+    for (size_t i = 0; i < rgb.size() / 3; ++i) {
+        rgb[3 * i] = r[i];
+        rgb[3 * i + 1] = g[i];
+        rgb[3 * i + 2] = b[i];
+    }
+    return texture_from_float(uint32_t(img.width), uint32_t(img.height), 3, rgb.data());
 }
 
 } // namespace
@@ -39,21 +41,26 @@ Texture load_texture(const std::string& path) {
     if (!in) input_error("{}: cannot read texture: {}", path, OIIO::geterror());
     const OIIO::ImageSpec& spec = in->spec();
     if (spec.width <= 0 || spec.height <= 0) input_error("{}: texture has no pixels", path);
-    std::vector<float> pixels(size_t(spec.width) * spec.height * spec.nchannels);
-    if (!in->read_image(0, 0, 0, spec.nchannels, OIIO::TypeDesc::FLOAT, pixels.data()))
-        input_error("{}: cannot read texture: {}", path, in->geterror());
-    const bool encoded = spec.format.basetype == OIIO::TypeDesc::UINT8 ||
-                         spec.format.basetype == OIIO::TypeDesc::UINT16;
-    t.width = uint32_t(spec.width);
-    t.height = uint32_t(spec.height);
-    t.texels.resize(size_t(t.width) * t.height);
-    const int nc = spec.nchannels;
-    for (size_t i = 0; i < t.texels.size(); ++i) {
-        vec3 c;
-        for (int k = 0; k < 3; ++k) c[k] = pixels[i * nc + std::min(k, nc - 1)];
-        if (encoded)
-            for (int k = 0; k < 3; ++k) c[k] = srgb_to_linear(c[k]);
-        t.texels[i] = c;
+    const uint32_t w = uint32_t(spec.width), h = uint32_t(spec.height);
+    const uint32_t nc = uint32_t(std::min(spec.nchannels, 4));
+    const size_t n = size_t(w) * h * nc;
+    // Integer images keep their values (a texture slot decides whether they are sRGB colour,
+    // shared/texture.h); anything else is read as float.
+    if (spec.format.basetype == OIIO::TypeDesc::UINT8) {
+        std::vector<uint8_t> px(n);
+        if (!in->read_image(0, 0, 0, int(nc), OIIO::TypeDesc::UINT8, px.data()))
+            input_error("{}: cannot read texture: {}", path, in->geterror());
+        t = texture_from_rgba8(w, h, nc, px.data());
+    } else if (spec.format.basetype == OIIO::TypeDesc::UINT16) {
+        std::vector<uint16_t> px(n);
+        if (!in->read_image(0, 0, 0, int(nc), OIIO::TypeDesc::UINT16, px.data()))
+            input_error("{}: cannot read texture: {}", path, in->geterror());
+        t = texture_from_rgba16(w, h, nc, px.data());
+    } else {
+        std::vector<float> px(n);
+        if (!in->read_image(0, 0, 0, int(nc), OIIO::TypeDesc::FLOAT, px.data()))
+            input_error("{}: cannot read texture: {}", path, in->geterror());
+        t = texture_from_float(w, h, nc, px.data());
     }
 #else
     const std::string ext = std::filesystem::path(path).extension().string();
@@ -63,10 +70,13 @@ Texture load_texture(const std::string& path) {
                     path);
     t = from_exr(path);
 #endif
-    for (const vec3& c : t.texels)
-        if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z) || c.x < 0 ||
-            c.y < 0 || c.z < 0)
-            input_error("{}: texture has negative or non-finite texels", path);
+    if (t.format == TEXEL_RGBA32F)
+        for (size_t i = 0; i < t.texel_count(); ++i) {
+            const vec4 c = t.raw(i);
+            if (!std::isfinite(c.x) || !std::isfinite(c.y) || !std::isfinite(c.z) ||
+                !std::isfinite(c.w) || c.x < 0 || c.y < 0 || c.z < 0 || c.w < 0)
+                input_error("{}: texture has negative or non-finite texels", path);
+        }
     return t;
 }
 

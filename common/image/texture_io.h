@@ -1,6 +1,7 @@
 // Image textures and environment maps from files. With OpenImageIO (the default build) any
-// format it reads; without it (the GPU bundle) OpenEXR only. 8-bit images are taken as sRGB
-// and decoded to linear; float images are taken as linear.
+// format it reads; without it (the GPU bundle) OpenEXR only. 8- and 16-bit images keep their
+// integer values (image/texture.h: a texture slot decides whether they are sRGB colour); float
+// images are taken as linear.
 #pragma once
 
 #include "image/texture.h"

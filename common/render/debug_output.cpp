@@ -89,6 +89,11 @@ json vertex_json(const PathVertex& v) {
     j["ng"] = vec(v.ng);
     j["ns"] = vec(v.ns);
     j["material"] = index(v.material);
+    j["base_color"] = vec(v.base_color);
+    j["roughness"] = number(v.roughness);
+    j["metallic"] = number(v.metallic);
+    j["transmission"] = number(v.transmission);
+    j["alpha"] = number(v.alpha);
     j["cos_emit"] = number(v.cos_emit);
     j["emitted"] = vec(v.emitted);
     j["mis_emission"] = number(v.mis_emission);
@@ -128,6 +133,11 @@ const std::vector<PathLogField>& path_log_fields() {
         {"ng", K::Direction},
         {"ns", K::Direction},
         {"material", K::Exact},
+        {"base_color", K::Radiometric},
+        {"roughness", K::Radiometric},
+        {"metallic", K::Radiometric},
+        {"transmission", K::Radiometric},
+        {"alpha", K::Radiometric},
         {"cos_emit", K::Direction},
         {"emitted", K::Radiometric},
         {"mis_emission", K::Radiometric},

@@ -117,7 +117,7 @@ std::string_view GltfResources::view_bytes(uint32_t view) const {
     return buffers_[v.buffer].substr(v.byte_offset, v.byte_length);
 }
 
-Texture GltfResources::decode_srgb_image(uint32_t image, const std::string& used_by) const {
+Texture GltfResources::decode_image(uint32_t image, const std::string& used_by) const {
     const GltfImage& img = doc_.images[image];
     const std::string field = fmt::format("images[{}]", image);
     std::string owned;
@@ -147,25 +147,17 @@ Texture GltfResources::decode_srgb_image(uint32_t image, const std::string& used
         decoded.image.size() != texels * channels * bytes_per)
         input_error("{}: {} (used by {}): the decoder returned no usable pixels", doc_.path, field,
                     used_by);
+    const uint32_t w = uint32_t(decoded.width), h = uint32_t(decoded.height);
     Texture t;
-    t.name = img.uri.empty() || is_data_uri(img.uri) ? field : clip(img.uri);
-    t.width = uint32_t(decoded.width);
-    t.height = uint32_t(decoded.height);
-    t.texels.resize(texels);
-    const unsigned char* p = decoded.image.data();
-    const float scale = bytes_per == 2 ? 1.0f / 65535.0f : 1.0f / 255.0f;
-    for (size_t i = 0; i < texels; ++i) {
-        vec3 c;
-        for (size_t k = 0; k < 3; ++k) {
-            // Grey images repeat their one channel; 16-bit samples are in the host's order.
-            const size_t at = (i * channels + std::min(k, channels - 1)) * bytes_per;
-            uint16_t v16 = 0;
-            if (bytes_per == 2) std::memcpy(&v16, p + at, 2);
-            const unsigned v = bytes_per == 2 ? v16 : p[at];
-            c[int(k)] = srgb_to_linear(float(v) * scale);
-        }
-        t.texels[i] = c;
+    if (bytes_per == 2) {
+        // 16-bit samples are in the host's order.
+        std::vector<uint16_t> px(texels * channels);
+        std::memcpy(px.data(), decoded.image.data(), px.size() * 2);
+        t = texture_from_rgba16(w, h, uint32_t(channels), px.data());
+    } else {
+        t = texture_from_rgba8(w, h, uint32_t(channels), decoded.image.data());
     }
+    t.name = img.uri.empty() || is_data_uri(img.uri) ? field : clip(img.uri);
     return t;
 }
 

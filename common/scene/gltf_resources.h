@@ -23,10 +23,10 @@ class GltfResources {
     // The bytes of buffer view `view` (inside its buffer: checked when the document was read).
     std::string_view view_bytes(uint32_t view) const;
 
-    // Image `image` as linear RGB: its 8- or 16-bit channels are sRGB-encoded (glTF 2.0,
-    // section 3.9.3: base colour and emissive textures), alpha is dropped. `used_by` names the
-    // field that needs it, for the error when the image is missing or cannot be decoded.
-    Texture decode_srgb_image(uint32_t image, const std::string& used_by) const;
+    // Image `image` with its 8- or 16-bit values as stored (image/texture.h): whether they are
+    // sRGB colour depends on the slot that reads them. `used_by` names the field that needs
+    // it, for the error when the image is missing or cannot be decoded.
+    Texture decode_image(uint32_t image, const std::string& used_by) const;
 
   private:
     const GltfDocument& doc_;

@@ -4,6 +4,7 @@
 #include "util/error.h"
 
 #include <cmath>
+#include <utility>
 
 namespace tp {
 
@@ -17,7 +18,47 @@ Material default_material() {
     m.ior = 1.5f;
     m.tf = vec3(1.0f);
     m.type = MATERIAL_PHONG;
+    m.metallic = 0.0f;
+    m.roughness = 1.0f;
+    m.transmission = 0.0f;
+    m.specular = 1.0f;
+    m.alpha = 1.0f;
+    m.alpha_cutoff = 0.5f;
+    m.alpha_mode = ALPHA_OPAQUE;
+    m.attenuation_distance = FLOAT_MAX;
+    m.metallic_roughness_texture = NO_TEXTURE;
+    m.normal_texture = NO_TEXTURE;
+    m.emissive_texture = NO_TEXTURE;
+    m.transmission_texture = NO_TEXTURE;
+    m.specular_texture = NO_TEXTURE;
+    m.specular_color_texture = NO_TEXTURE;
+    m.normal_scale = 1.0f;
+    m.flags = 0u;
     return m;
+}
+
+Material default_pbr_material() {
+    Material m = default_material();
+    m.type = MATERIAL_PBR;
+    m.kd = vec3(1.0f);
+    m.ks = vec3(1.0f);
+    m.metallic = 1.0f;
+    return m;
+}
+
+TextureSlot make_texture_slot(uint32_t image, vec3 transform_s, vec3 transform_t,
+                              uint32_t sampling) {
+    TextureSlot t{};
+    t.image = image;
+    t.transform_s = transform_s;
+    t.transform_t = transform_t;
+    t.sampling = sampling;
+    return t;
+}
+
+TextureSlot obj_texture_slot(uint32_t image, bool srgb) {
+    return make_texture_slot(image, vec3(1.0f, 0.0f, 0.0f), vec3(0.0f, -1.0f, 1.0f),
+                             srgb ? SLOT_SRGB : 0u);
 }
 
 namespace {
@@ -49,6 +90,30 @@ void validate_material(const Material& m, const std::string& where) {
     }
     if (m.type == MATERIAL_MIRROR && max3(m.ks) > 1.0f + 1e-6f)
         input_error("{}: a mirror's Ks must be <= 1, got {}", where, max3(m.ks));
+    if (m.type == MATERIAL_PBR) {
+        // glTF's ranges (its schema, KHR_materials_*): the BSDF of shared/pbr.h is defined for
+        // these and no others. The specular colour may exceed 1 (its f0 is clamped).
+        if (max3(m.kd) > 1.0f)
+            input_error("{}: base_color must be in [0, 1], got ({}, {}, {})", where, m.kd.x,
+                        m.kd.y, m.kd.z);
+        const std::pair<const char*, float> unit[] = {{"metallic", m.metallic},
+                                                      {"roughness", m.roughness},
+                                                      {"transmission", m.transmission},
+                                                      {"specular", m.specular},
+                                                      {"alpha", m.alpha},
+                                                      {"alpha_cutoff", m.alpha_cutoff}};
+        for (const auto& [name, v] : unit)
+            if (!(v >= 0.0f && v <= 1.0f))
+                input_error("{}: {} must be in [0, 1], got {}", where, name, v);
+        if (max3(m.tf) > 1.0f)
+            input_error("{}: attenuation_color must be in [0, 1], got ({}, {}, {})", where, m.tf.x,
+                        m.tf.y, m.tf.z);
+        if (!(m.attenuation_distance > 0.0f))
+            input_error("{}: attenuation_distance must be > 0, got {}", where,
+                        m.attenuation_distance);
+        if (!std::isfinite(m.normal_scale))
+            input_error("{}: normal_scale must be finite, got {}", where, m.normal_scale);
+    }
 }
 
 void light_if_unlit(Scene& scene, std::vector<std::string>& warnings) {

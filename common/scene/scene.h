@@ -24,7 +24,9 @@ struct Mesh {
     std::string name;
     std::vector<glm::dvec3> positions; // in the mesh's own space
     std::vector<vec3> normals;         // empty, or one per position
-    std::vector<vec2> uvs;             // empty, or one per position
+    std::vector<vec2> uvs;             // empty, or one per position: the first uv set, as given
+    std::vector<vec2> uvs1;            // empty, or one per position: the second uv set
+    std::vector<vec4> tangents;        // empty, or one per position: xyz and bitangent sign w
     std::vector<uvec3> triangles;
 };
 
@@ -36,12 +38,15 @@ struct Object {
     glm::dmat4 transform{1.0}; // object to world
 };
 
-// An explicit light: a point light at `position`, or a directional light.
+// An explicit light: a point or spot light at `position`, or a directional light.
 struct LightDesc {
-    uint32_t type = LIGHT_POINT; // LIGHT_POINT or LIGHT_DIRECTIONAL
-    glm::dvec3 position{0.0};    // point: where it is
-    vec3 direction{0.0f};        // directional: unit vector towards the light
-    vec3 value{0.0f};            // point: intensity (W/sr); directional: irradiance (W/m^2)
+    uint32_t type = LIGHT_POINT; // LIGHT_POINT, LIGHT_SPOT or LIGHT_DIRECTIONAL
+    glm::dvec3 position{0.0};    // point, spot: where it is
+    vec3 direction{0.0f};        // directional: unit vector towards the light; spot: its axis,
+                                 // the unit direction it shines along
+    vec3 value{0.0f}; // point, spot: intensity (W/sr, on the axis); directional: irradiance (W/m^2)
+    float inner_cone = 0.0f;         // spot: full intensity within this angle of the axis (rad)
+    float outer_cone = 0.7853982f;   // spot: none beyond it (rad), pi / 4 by default
 };
 
 struct CameraDesc {
@@ -75,7 +80,8 @@ struct Scene {
     RenderSettings settings;
     std::vector<Material> materials;
     std::vector<std::string> material_names;
-    std::vector<Texture> textures;
+    std::vector<Texture> textures;          // the images
+    std::vector<TextureSlot> texture_slots; // how materials read them (Material's *_texture)
     std::vector<Mesh> meshes;
     std::vector<Object> objects;
     std::vector<LightDesc> lights; // emitters and the environment are derived
@@ -87,17 +93,31 @@ struct Scene {
     std::vector<std::string> dropped;
 };
 
-// A material with every field at its neutral value: black Phong, ior 1.5, tf 1.
+// A material with every field at its neutral value: black Phong, ior 1.5, tf 1, opaque, no
+// texture; the PBR fields at glTF's defaults where a Phong material ignores them.
 Material default_material();
 
+// glTF's default material (glTF 2.0, section 3.9.6): white base colour, metallic 1, roughness 1.
+Material default_pbr_material();
+
 // Checks what a material must satisfy (finite, non-negative, kd + ks <= 1 per channel,
-// ns >= 0, ior > 0) and throws InputError naming `where` otherwise.
+// ns >= 0, ior > 0; PBR: base colour, metallic, roughness, transmission, specular and alpha in
+// [0, 1], attenuation distance > 0) and throws InputError naming `where` otherwise.
 void validate_material(const Material& m, const std::string& where);
 
 // A scene in which nothing emits light (no explicit light, no emissive material an object
 // uses, no environment) is lit by a constant white environment of radiance 1, with a warning:
 // OBJ and glTF files often carry no lights.
 void light_if_unlit(Scene& scene, std::vector<std::string>& warnings);
+
+// A texture slot reading image `image` with uv -> (s, t) the affine map given by its two rows,
+// and the sampling bits (SLOT_*, shared/types.h).
+TextureSlot make_texture_slot(uint32_t image, vec3 transform_s, vec3 transform_t,
+                              uint32_t sampling);
+
+// The slot of an OBJ/MTL or JSON texture: OBJ's uv convention (v = 0 at the bottom row:
+// s = u, t = 1 - v), repeat, bilinear, the first uv set; `srgb` for a colour texture.
+TextureSlot obj_texture_slot(uint32_t image, bool srgb);
 
 // Drops zero-area triangles (counted in scene.skipped_triangles) and checks indices and that
 // every attribute is finite; `where` names the source in error messages.

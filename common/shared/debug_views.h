@@ -14,14 +14,18 @@ PixelAov primary_aov(Ray ray) {
     a.normal = vec3(0.0f);
     a.instance = NO_INDEX;
     a.material = NO_INDEX;
+    a.roughness = 0.0f;
+    a.metallic = 0.0f;
     a.pad0 = 0u;
-    a.pad1 = 0u;
-    a.pad2 = 0u;
     TraceHit hit;
     if (!trace_closest(ray, hit)) return a;
     SurfacePoint sp = scene_surface(hit);
-    Material m = scene_material(hit.instance, sp.uv);
+    Material m = scene_material(hit.instance, sp);
     a.albedo = material_albedo(m);
+    if (m.type == MATERIAL_PBR) {
+        a.roughness = m.roughness;
+        a.metallic = m.metallic;
+    }
     a.depth = hit.t;
     a.normal = sp.ns;
     a.instance = hit.instance;

@@ -1,4 +1,4 @@
-// Scene features: which materials, lights and environment a scene uses, as bits of
+// Scene features: which materials, lights, textures and environment a scene uses, as bits of
 // one mask, and the integrator's dispatch over materials and lights restricted to that mask.
 // common/scene/features.h computes the mask of a FlatScene. Each engine compiles its path loop
 // for a mask: the CPU engine instantiates a template on some bits (cpu_ref/integrator.cpp), the
@@ -15,10 +15,11 @@
 
 #include "brdf.h"
 #include "lights.h"
+#include "pbr.h"
 
 TP_NAMESPACE_BEGIN
 
-const uint FEATURE_TEXTURES = 1u;            // a material with a diffuse texture (map_Kd)
+const uint FEATURE_TEXTURES = 1u;            // a material with a texture (map_Kd, glTF's slots)
 const uint FEATURE_PHONG_SPECULAR = 2u;      // a Phong material with ks > 0: the glossy lobe
 const uint FEATURE_MIRROR = 4u;              // a perfect mirror
 const uint FEATURE_DIELECTRIC = 8u;          // a smooth dielectric
@@ -32,8 +33,11 @@ const uint FEATURE_ENV_MAP = 256u;      // a lat-long environment map
 // places every mesh that one instance uses in world space whatever the mask, and pipeline mode
 // always has its TLAS and BLASes.
 const uint FEATURE_INSTANCING = 512u;
-const uint FEATURE_COUNT = 10u;
-const uint FEATURES_ALL = 1023u;
+const uint FEATURE_PBR = 1024u;         // glTF's metallic-roughness material (pbr.h)
+const uint FEATURE_NORMAL_MAPS = 2048u; // a material with a normal map (and its tangent frames)
+const uint FEATURE_ALPHA = 4096u;       // a material with alpha MASK or BLEND (alpha.h)
+const uint FEATURE_COUNT = 13u;
+const uint FEATURES_ALL = 8191u;
 
 inline bool feature_on(uint features, uint f) {
     return (features & f) != 0u;
@@ -60,6 +64,11 @@ inline bool features_environment(uint features) {
 
 inline bool features_delta_materials(uint features) {
     return feature_on(features, FEATURE_MIRROR | FEATURE_DIELECTRIC);
+}
+
+// A material kind other than Phong: brdf_*_in dispatch on Material::type only where one is on.
+inline bool features_other_materials(uint features) {
+    return feature_on(features, FEATURE_MIRROR | FEATURE_DIELECTRIC | FEATURE_PBR);
 }
 
 // ---- Lambert: the modified Phong BRDF with ks = 0 -------------------------------------------
@@ -93,17 +102,30 @@ inline BsdfSample lambert_sample(vec3 kd, vec3 n, vec3 wo, vec2 u_dir) {
 }
 
 // ---- brdf.h's dispatch, restricted to a feature mask -----------------------------------------
+// Whether next-event estimation can skip the material: every lobe is a Dirac delta (mirror,
+// smooth dielectric, a smooth PBR material without a diffuse part).
 inline bool material_is_delta_in(uint features, Material m) {
+    if (feature_on(features, FEATURE_PBR) && m.type == MATERIAL_PBR)
+        return pbr_is_smooth(m) && !pbr_has_diffuse(m);
     return features_delta_materials(features) && material_is_delta(m);
 }
 
+// Whether the material scatters light through the surface into non-delta directions, so that
+// next-event estimation also samples lights on the far side.
+inline bool material_transmits_in(uint features, Material m) {
+    return feature_on(features, FEATURE_PBR) && m.type == MATERIAL_PBR && pbr_transmits(m) &&
+           !pbr_is_smooth(m);
+}
+
 inline vec3 bsdf_eval_in(uint features, Material m, vec3 n, vec3 wo, vec3 wi) {
+    if (feature_on(features, FEATURE_PBR) && m.type == MATERIAL_PBR) return pbr_eval(m, n, wo, wi);
     if (features_delta_materials(features) && m.type != MATERIAL_PHONG) return vec3(0.0f);
     if (!feature_on(features, FEATURE_PHONG_SPECULAR)) return lambert_eval(m.kd, n, wo, wi);
     return phong_eval(m.kd, m.ks, m.ns, n, wo, wi);
 }
 
 inline float bsdf_pdf_in(uint features, Material m, vec3 n, vec3 wo, vec3 wi) {
+    if (feature_on(features, FEATURE_PBR) && m.type == MATERIAL_PBR) return pbr_pdf(m, n, wo, wi);
     if (features_delta_materials(features) && m.type != MATERIAL_PHONG) return 0.0f;
     if (!feature_on(features, FEATURE_PHONG_SPECULAR)) return lambert_pdf(n, wo, wi);
     return phong_pdf(m.kd, m.ks, m.ns, n, wo, wi);
@@ -111,6 +133,8 @@ inline float bsdf_pdf_in(uint features, Material m, vec3 n, vec3 wo, vec3 wi) {
 
 inline BsdfSample bsdf_sample_in(uint features, Material m, vec3 n, vec3 wo, float u_lobe,
                                  vec2 u_dir) {
+    if (feature_on(features, FEATURE_PBR) && m.type == MATERIAL_PBR)
+        return pbr_sample(m, n, wo, u_lobe, u_dir);
     if (feature_on(features, FEATURE_MIRROR) && m.type == MATERIAL_MIRROR)
         return mirror_sample(m.ks, n, wo);
     if (feature_on(features, FEATURE_DIELECTRIC) && m.type == MATERIAL_DIELECTRIC)
@@ -120,9 +144,11 @@ inline BsdfSample bsdf_sample_in(uint features, Material m, vec3 n, vec3 wo, flo
 }
 
 // Whether bsdf_sample_in's result depends on u_lobe: a dielectric chooses reflection or
-// refraction with it; a Phong material only where both lobes have weight, since u_lobe < p_d
-// holds for every u_lobe in [0, 1) when p_d >= 1 and for none when p_d <= 0.
+// refraction with it, a PBR material its lobe; a Phong material only where both lobes have
+// weight, since u_lobe < p_d holds for every u_lobe in [0, 1) when p_d >= 1 and for none when
+// p_d <= 0.
 inline bool bsdf_reads_lobe_choice_in(uint features, Material m) {
+    if (feature_on(features, FEATURE_PBR) && m.type == MATERIAL_PBR) return true;
     if (feature_on(features, FEATURE_MIRROR) && m.type == MATERIAL_MIRROR) return false;
     if (feature_on(features, FEATURE_DIELECTRIC) && m.type == MATERIAL_DIELECTRIC) return true;
     if (!feature_on(features, FEATURE_PHONG_SPECULAR)) return false;
@@ -135,6 +161,8 @@ inline LightSample sample_light_in(uint features, Light l, vec3 p, vec2 u,
                                    bool normal_from_vertices) {
     if (feature_on(features, FEATURE_POINT_LIGHTS) && l.type == LIGHT_POINT)
         return sample_point_light(l, p);
+    if (feature_on(features, FEATURE_POINT_LIGHTS) && l.type == LIGHT_SPOT)
+        return sample_spot_light(l, p);
     if (feature_on(features, FEATURE_DIRECTIONAL_LIGHTS) && l.type == LIGHT_DIRECTIONAL)
         return sample_directional_light(l);
     if (feature_on(features, FEATURE_EMISSIVE_TRIANGLES) && l.type == LIGHT_TRIANGLE)

@@ -83,14 +83,22 @@ bool path_at_hit(INOUT(PathState) st, bool found, TraceHit hit, INOUT(RayCounts)
     uint light_offset = instances[hit.instance].light_offset;
     SurfacePoint sp = scene_surface(hit);
     surface_snap_to_ray(sp, st.ray.origin, st.ray.dir);
-    Material mat = scene_material(hit.instance, sp.uv);
+    Material mat = scene_material(hit.instance, sp);
     vec3 wo = -st.ray.dir;
+    float cos_emit = dot(sp.ng, wo);
+    // A PBR volume met from inside: the segment just traced crossed its medium (Beer-Lambert),
+    // and the boundary's relative index is the reciprocal (pbr.h).
+    if (feature_on(scene_features, FEATURE_PBR) && mat.type == MATERIAL_PBR && cos_emit < 0.0f &&
+        pbr_is_volume(mat)) {
+        st.T *= pbr_volume_transmittance(mat, hit.t);
+        mat = pbr_material_at_side(mat, true);
+    }
     PATH_LOG(rec.event = VERTEX_HIT; rec.t = hit.t; rec.instance = hit.instance;
              rec.primitive = hit.primitive; rec.bary = hit.bary;
-             rec.material = instances[hit.instance].material; rec.position = sp.p);
+             rec.material = instances[hit.instance].material; rec.position = sp.p;
+             path_vertex_set_material(rec, mat));
 
     // 1. Emission, front face only.
-    float cos_emit = dot(sp.ng, wo);
     PATH_LOG(rec.cos_emit = cos_emit);
     if (feature_on(scene_features, FEATURE_EMISSIVE_TRIANGLES) && !is_black(mat.ke) &&
         cos_emit > 0.0f) {
@@ -136,7 +144,13 @@ bool path_at_hit(INOUT(PathState) st, bool found, TraceHit hit, INOUT(RayCounts)
                  rec.rng[RNG_LIGHT_COIN] = uint_to_unit_float(pick.y); rec.rng[RNG_LIGHT_U] = u.x;
                  rec.rng[RNG_LIGHT_V] = u.y; rec.rng[RNG_ENV_SLOT] = uint_to_unit_float(env.x);
                  rec.rng[RNG_ENV_COIN] = uint_to_unit_float(env.y));
-        if (ls.pdf > 0.0f && dot(ls.wi, sp.ng) > 0.0f) {
+        // A light on the viewer's side of the surface, or, for a material that transmits, on
+        // either side where the shading normal agrees with the surface about which side it is.
+        float side_g = dot(ls.wi, sp.ng);
+        bool side_ok = material_transmits_in(scene_features, mat)
+                           ? side_g != 0.0f && (side_g > 0.0f) == (dot(ls.wi, sp.ns) > 0.0f)
+                           : side_g > 0.0f;
+        if (ls.pdf > 0.0f && side_ok) {
             vec3 f = bsdf_eval_in(scene_features, mat, sp.ns, wo, ls.wi);
             PATH_LOG(rec.light_f = f);
             if (!is_black(f) && !is_black(ls.radiance)) {

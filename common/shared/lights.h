@@ -46,6 +46,21 @@ inline LightSample sample_point_light(Light l, vec3 p) {
     return s;
 }
 
+// A spot light (KHR_lights_punctual): a point light whose intensity falls from I on the axis
+// to 0 at the outer cone, smoothly over the angles between the cones: with c the cosine to the
+// axis, f = clamp(c s + o, 0, 1)^2, where s = 1 / max(1e-3, cos(inner) - cos(outer)) and
+// o = -cos(outer) s are stored in p2.xy (the extension's recommended falloff).
+inline float spot_light_falloff(Light l, vec3 wi) {
+    float f = clamp(-dot(wi, l.p1) * l.p2.x + l.p2.y, 0.0f, 1.0f);
+    return f * f;
+}
+
+inline LightSample sample_spot_light(Light l, vec3 p) {
+    LightSample s = sample_point_light(l, p);
+    if (s.pdf > 0.0f) s.radiance *= spot_light_falloff(l, s.wi);
+    return s;
+}
+
 inline LightSample sample_directional_light(Light l) {
     LightSample s;
     s.wi = l.p0;
@@ -153,6 +168,7 @@ inline LightSample sample_environment_map(uint pixel, float p_pixel, uint w, uin
 // Every light but the environment *map*, whose pixel table the engine reads itself.
 inline LightSample sample_light(Light l, vec3 p, vec2 u, bool normal_from_vertices) {
     if (l.type == LIGHT_POINT) return sample_point_light(l, p);
+    if (l.type == LIGHT_SPOT) return sample_spot_light(l, p);
     if (l.type == LIGHT_DIRECTIONAL) return sample_directional_light(l);
     if (l.type == LIGHT_TRIANGLE) return sample_triangle_light(l, p, u, normal_from_vertices);
     return sample_constant_environment(l, u);

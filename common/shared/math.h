@@ -12,6 +12,7 @@ const float INV_PI = 0.31830988618379067154f;
 const float INV_TWO_PI = 0.15915494309189533577f;
 const float INV_FOUR_PI = 0.07957747154594766788f;
 const float FLOAT_MAX = 3.402823466e38f;
+const float ONE_MINUS_EPSILON = 0.99999994f; // the largest float below 1
 
 inline float max3(vec3 v) {
     return max(v.x, max(v.y, v.z));

@@ -77,7 +77,11 @@ struct PathVertex {
     vec3 throughput;  // after this vertex (scattering and roulette)
     float roulette_q; // survival probability (1: no roulette)
     vec3 radiance;    // L after this vertex
-    uint pad0;
+    float roughness;  // the material at the hit, textures applied: PBR roughness (0 otherwise)
+    vec3 base_color;  // kd: Phong's diffuse reflectance, PBR's base colour
+    float metallic;   // PBR metallic (0 otherwise)
+    float transmission; // PBR transmission (0 otherwise)
+    float alpha;        // coverage (1 for opaque materials)
 };
 
 inline PathVertex path_vertex_begin(uint sample_index, uint bounce, Ray ray) {
@@ -115,7 +119,11 @@ inline PathVertex path_vertex_begin(uint sample_index, uint bounce, Ray ray) {
     v.throughput = vec3(0.0f);
     v.roulette_q = 1.0f;
     v.radiance = vec3(0.0f);
-    v.pad0 = 0u;
+    v.roughness = 0.0f;
+    v.base_color = vec3(0.0f);
+    v.metallic = 0.0f;
+    v.transmission = 0.0f;
+    v.alpha = 1.0f;
     return v;
 }
 
@@ -149,17 +157,29 @@ struct PixelAov {
     vec3 normal;   // shading normal as interpolated (not turned to the viewer); 0 for a miss
     uint instance; // NO_INDEX for a miss
     uint material; // NO_INDEX for a miss
+    float roughness; // PBR roughness and metallic with textures applied (0 otherwise)
+    float metallic;
     uint pad0;
-    uint pad1;
-    uint pad2;
 };
 
 // What an albedo AOV shows: the reflectance at normal incidence (Phong kd + ks, the mirror's
-// tint, the dielectric's transmission filter), emission not included.
+// tint, the dielectric's transmission filter, a PBR material's base colour), emission not
+// included.
 inline vec3 material_albedo(Material m) {
     if (m.type == MATERIAL_MIRROR) return m.ks;
     if (m.type == MATERIAL_DIELECTRIC) return m.tf;
+    if (m.type == MATERIAL_PBR) return m.kd;
     return m.kd + m.ks;
+}
+
+// The material fields a path log records at a hit (the PBR ones are 0 for other kinds).
+inline void path_vertex_set_material(INOUT(PathVertex) v, Material m) {
+    bool pbr = m.type == MATERIAL_PBR;
+    v.base_color = m.kd;
+    v.roughness = pbr ? m.roughness : 0.0f;
+    v.metallic = pbr ? m.metallic : 0.0f;
+    v.transmission = pbr ? m.transmission : 0.0f;
+    v.alpha = m.alpha_mode == ALPHA_OPAQUE ? 1.0f : m.alpha;
 }
 
 // The camera ray through the centre of pixel (x, y).
@@ -173,8 +193,9 @@ inline Ray camera_center_ray(Camera c, uint x, uint y) {
 }
 
 #ifdef __cplusplus
-static_assert(sizeof(PathVertex) == 280, "PathVertex layout");
-static_assert(offsetof(PathVertex, rng) == 176 && offsetof(PathVertex, radiance) == 264,
+static_assert(sizeof(PathVertex) == 304, "PathVertex layout");
+static_assert(offsetof(PathVertex, rng) == 176 && offsetof(PathVertex, radiance) == 264 &&
+                  offsetof(PathVertex, alpha) == 300,
               "PathVertex layout");
 static_assert(sizeof(DebugHeader) == 32, "DebugHeader layout");
 static_assert(sizeof(PixelAov) == 48, "PixelAov layout");

@@ -1,9 +1,10 @@
 // The scene reads of both engines: the surface at a hit, the material there, the environment
 // and light sampling, written once against the scene's arrays, which each engine names the
 // same way before including this file:
-//   params, instances[], meshes[], triangles[], positions[], normals[], uvs[], materials[],
-//   textures[], texels[], lights[], light_table[], env_table[]  (FlatScene's arrays; GLSL:
-//   the storage buffers of shaders/bindings.glsl)
+//   params, instances[], meshes[], triangles[], positions[], normals[], uvs[], uvs1[],
+//   tangents[], materials[], texture_slots[], textures[], texel_words[], lights[],
+//   light_table[], env_table[]  (FlatScene's arrays; GLSL: the storage buffers of
+//   shaders/bindings.glsl)
 //   scene_features                        the feature mask the reads are restricted to (what
 //                                         the scene cannot use is compiled out)
 //   scene_error_terms(uint instance)      the instance's InstanceErrorTerms (surface.h)
@@ -12,11 +13,12 @@
 //                                         (lights.h, light_normal)
 // GLSL includes it after those; C++ includes it inside the engine's class template
 // (cpu_ref/cpu_engine.h), so that these functions become its members. It includes nothing
-// itself: lights.h, surface.h, texture.h and features.h come first.
+// itself: lights.h, surface.h, texture.h, alpha.h and features.h come first.
 #ifndef TP_SHARED_SCENE_ACCESS_H
 #define TP_SHARED_SCENE_ACCESS_H
 
-// World-space point, normals and uv of a hit (uv only with textures, its one use).
+// World-space point, normals, uv sets and tangent frame of a hit (uv and tangents only where
+// textures are on, their one use).
 SurfacePoint scene_surface(TraceHit h) {
     Instance inst = instances[h.instance];
     MeshInfo m = meshes[inst.mesh];
@@ -27,25 +29,141 @@ SurfacePoint scene_surface(TraceHit h) {
     if ((m.flags & MESH_HAS_NORMALS) != 0u)
         surface_set_shading_normal(sp, inst, normals[base + t.x], normals[base + t.y],
                                    normals[base + t.z], h.bary);
-    if (feature_on(scene_features, FEATURE_TEXTURES) && (m.flags & MESH_HAS_UVS) != 0u)
-        sp.uv = barycentric_mix2(uvs[base + t.x], uvs[base + t.y], uvs[base + t.z], h.bary);
+    if (feature_on(scene_features, FEATURE_TEXTURES)) {
+        if ((m.flags & MESH_HAS_UVS) != 0u)
+            sp.uv = barycentric_mix2(uvs[base + t.x], uvs[base + t.y], uvs[base + t.z], h.bary);
+        if ((m.flags & MESH_HAS_UV1) != 0u)
+            sp.uv1 = barycentric_mix2(uvs1[base + t.x], uvs1[base + t.y], uvs1[base + t.z], h.bary);
+    }
+    if (feature_on(scene_features, FEATURE_NORMAL_MAPS) && (m.flags & MESH_HAS_TANGENTS) != 0u &&
+        (m.flags & MESH_HAS_NORMALS) != 0u) {
+        vec4 tg = barycentric_mix4(tangents[base + t.x], tangents[base + t.y], tangents[base + t.z],
+                                   h.bary);
+        vec3 n = barycentric_mix3(normals[base + t.x], normals[base + t.y], normals[base + t.z],
+                                  h.bary);
+        surface_set_tangent_frame(sp, inst, n, tg);
+    }
     return sp;
 }
 
-vec3 scene_texture(int index, vec2 st, bool clamp_t) {
-    TextureInfo info = textures[index];
-    TexelFootprint fp = texture_footprint(st, info.width, info.height, clamp_t);
-    uint o = info.offset;
-    return texture_bilerp(texels[o + fp.i00], texels[o + fp.i10], texels[o + fp.i01],
-                          texels[o + fp.i11], fp.f);
+// Texel i of an image, as stored (not decoded).
+vec4 scene_texel(TextureInfo info, uint i) {
+    if (info.format == TEXEL_RGBA8) return unpack_rgba8(texel_words[info.offset + i]);
+    if (info.format == TEXEL_RGBA16)
+        return unpack_rgba16(texel_words[info.offset + 2u * i],
+                             texel_words[info.offset + 2u * i + 1u]);
+    uint o = info.offset + 4u * i;
+    return vec4(uintBitsToFloat(texel_words[o]), uintBitsToFloat(texel_words[o + 1u]),
+                uintBitsToFloat(texel_words[o + 2u]), uintBitsToFloat(texel_words[o + 3u]));
 }
 
-// The instance's material with its diffuse texture applied at uv.
-Material scene_material(uint instance, vec2 uv) {
+// Texel i decoded to linear values: sRGB-encoded integer colour is decoded; float images, and
+// integer images read as data, are linear already.
+vec4 scene_texel_linear(TextureInfo info, uint i, bool srgb) {
+    vec4 c = scene_texel(info, i);
+    return srgb && info.format != TEXEL_RGBA32F ? srgb_to_linear4(c) : c;
+}
+
+// Image `image` at image coordinates st, bilinear, under the wrap modes of s and t.
+vec4 scene_image_bilinear(uint image, vec2 st, uint wrap_s, uint wrap_t, bool srgb) {
+    TextureInfo info = textures[image];
+    TexelFootprint fp = texture_footprint(st, info.width, info.height, wrap_s, wrap_t);
+    return texture_bilerp(scene_texel_linear(info, fp.i00, srgb),
+                          scene_texel_linear(info, fp.i10, srgb),
+                          scene_texel_linear(info, fp.i01, srgb),
+                          scene_texel_linear(info, fp.i11, srgb), fp.f);
+}
+
+// Texture slot `slot` (TextureSlot) at a surface with uv sets uv0 and uv1, in linear RGBA.
+vec4 scene_texture(int slot, vec2 uv0, vec2 uv1) {
+    TextureSlot ts = texture_slots[slot];
+    vec3 uv = vec3((ts.sampling & SLOT_UV1) != 0u ? uv1 : uv0, 1.0f);
+    vec2 st = vec2(dot(ts.transform_s, uv), dot(ts.transform_t, uv));
+    uint wrap_s = ts.sampling & 3u;
+    uint wrap_t = (ts.sampling >> SLOT_WRAP_T_SHIFT) & 3u;
+    bool srgb = (ts.sampling & SLOT_SRGB) != 0u;
+    if ((ts.sampling & SLOT_NEAREST) == 0u)
+        return scene_image_bilinear(ts.image, st, wrap_s, wrap_t, srgb);
+    TextureInfo info = textures[ts.image];
+    return scene_texel_linear(info, texture_nearest(st, info.width, info.height, wrap_s, wrap_t),
+                              srgb);
+}
+
+// The instance's material at surface point sp with its textures applied, and sp's shading
+// normal bent by the material's normal map (surface.h, surface_apply_normal_map).
+Material scene_material(uint instance, INOUT(SurfacePoint) sp) {
     Material m = materials[instances[instance].material];
-    if (feature_on(scene_features, FEATURE_TEXTURES) && m.kd_texture != NO_TEXTURE)
-        m.kd *= scene_texture(m.kd_texture, uv_to_image(uv), false);
+    if (!feature_on(scene_features, FEATURE_TEXTURES)) return m;
+    if (m.kd_texture != NO_TEXTURE) {
+        vec4 c = scene_texture(m.kd_texture, sp.uv, sp.uv1);
+        m.kd *= vec3(c.x, c.y, c.z);
+        m.alpha *= c.w;
+    }
+    if (!feature_on(scene_features, FEATURE_PBR) || m.type != MATERIAL_PBR) return m;
+    if (m.metallic_roughness_texture != NO_TEXTURE) {
+        vec4 c = scene_texture(m.metallic_roughness_texture, sp.uv, sp.uv1);
+        m.roughness *= c.y;
+        m.metallic *= c.z;
+    }
+    if (m.emissive_texture != NO_TEXTURE) {
+        vec4 c = scene_texture(m.emissive_texture, sp.uv, sp.uv1);
+        m.ke *= vec3(c.x, c.y, c.z);
+    }
+    if (m.transmission_texture != NO_TEXTURE)
+        m.transmission *= scene_texture(m.transmission_texture, sp.uv, sp.uv1).x;
+    if (m.specular_texture != NO_TEXTURE)
+        m.specular *= scene_texture(m.specular_texture, sp.uv, sp.uv1).w;
+    if (m.specular_color_texture != NO_TEXTURE) {
+        vec4 c = scene_texture(m.specular_color_texture, sp.uv, sp.uv1);
+        m.ks *= vec3(c.x, c.y, c.z);
+    }
+    if (feature_on(scene_features, FEATURE_NORMAL_MAPS) && m.normal_texture != NO_TEXTURE) {
+        vec4 c = scene_texture(m.normal_texture, sp.uv, sp.uv1);
+        surface_apply_normal_map(sp, vec3(c.x, c.y, c.z), m.normal_scale);
+    }
     return m;
+}
+
+// The uv sets of `instance`'s triangle `primitive` at barycentric weights bary (zero where the
+// mesh has none).
+void scene_uvs_at(uint instance, uint primitive, vec2 bary, OUT(vec2) uv0, OUT(vec2) uv1) {
+    MeshInfo mesh = meshes[instances[instance].mesh];
+    uvec3 t = triangles[mesh.first_triangle + primitive];
+    uint base = mesh.first_vertex;
+    uv0 = vec2(0.0f);
+    uv1 = vec2(0.0f);
+    if ((mesh.flags & MESH_HAS_UVS) != 0u)
+        uv0 = barycentric_mix2(uvs[base + t.x], uvs[base + t.y], uvs[base + t.z], bary);
+    if ((mesh.flags & MESH_HAS_UV1) != 0u)
+        uv1 = barycentric_mix2(uvs1[base + t.x], uvs1[base + t.y], uvs1[base + t.z], bary);
+}
+
+// Whether the surface of `instance` is there at a candidate hit of `ray` (alpha as coverage,
+// alpha.h): what every traversal of both engines asks before it accepts a hit, where the
+// scene has alpha (FEATURE_ALPHA).
+bool scene_alpha_covers(uint instance, uint primitive, vec2 bary, Ray ray) {
+    Material m = materials[instances[instance].material];
+    if (m.alpha_mode == ALPHA_OPAQUE) return true;
+    float a = m.alpha;
+    if (feature_on(scene_features, FEATURE_TEXTURES) && m.kd_texture != NO_TEXTURE) {
+        vec2 uv0;
+        vec2 uv1;
+        scene_uvs_at(instance, primitive, bary, uv0, uv1);
+        a *= scene_texture(m.kd_texture, uv0, uv1).w;
+    }
+    return alpha_covers(m.alpha_mode, a, m.alpha_cutoff, ray.origin, ray.dir, instance, primitive);
+}
+
+// What the emissive texture of triangle light l's material makes of its radiance at
+// barycentric weights bary: the light stores the material's emissive factor (Light::value).
+vec3 scene_emission_texture(Light l, vec2 bary) {
+    Material m = materials[instances[l.instance].material];
+    if (m.type != MATERIAL_PBR || m.emissive_texture == NO_TEXTURE) return vec3(1.0f);
+    vec2 uv0;
+    vec2 uv1;
+    scene_uvs_at(l.instance, l.primitive, bary, uv0, uv1);
+    vec4 c = scene_texture(m.emissive_texture, uv0, uv1);
+    return vec3(c.x, c.y, c.z);
 }
 
 float scene_light_selection_pdf(uint i) {
@@ -57,8 +175,10 @@ vec3 scene_environment_radiance(vec3 d) {
     Light env = lights[params.env_light];
     if (!feature_on(scene_features, FEATURE_ENV_MAP) || params.env_texture == NO_TEXTURE)
         return env.value;
-    return env.value *
-           scene_texture(params.env_texture, environment_map_coords(d, params.env_rotation), true);
+    vec4 c = scene_image_bilinear(uint(params.env_texture),
+                                  environment_map_coords(d, params.env_rotation), SLOT_WRAP_REPEAT,
+                                  SLOT_WRAP_CLAMP, true);
+    return env.value * vec3(c.x, c.y, c.z);
 }
 
 // Solid-angle density with which light sampling picks direction d from the environment,
@@ -78,8 +198,14 @@ float scene_environment_pdf(vec3 d) {
 LightSample scene_sample_light(uint i, vec3 p, vec2 u, uint env_slot_bits, float env_coin) {
     Light l = lights[i];
     if (!feature_on(scene_features, FEATURE_ENV_MAP) || l.type != LIGHT_ENVIRONMENT ||
-        params.env_texture == NO_TEXTURE)
-        return sample_light_in(scene_features, l, p, u, SCENE_LIGHT_NORMAL_FROM_VERTICES);
+        params.env_texture == NO_TEXTURE) {
+        LightSample ls = sample_light_in(scene_features, l, p, u, SCENE_LIGHT_NORMAL_FROM_VERTICES);
+        // The sampled point's barycentrics are sample_triangle_light's (lights.h).
+        if (feature_on(scene_features, FEATURE_PBR) && feature_on(scene_features, FEATURE_TEXTURES) &&
+            l.type == LIGHT_TRIANGLE && ls.pdf > 0.0f)
+            ls.radiance *= scene_emission_texture(l, sample_uniform_triangle(u));
+        return ls;
+    }
     if (scene_env_table_size() == 0u) return light_sample_none();
     TextureInfo info = textures[params.env_texture];
     uint slot = alias_slot_from_bits(env_slot_bits, scene_env_table_size());

@@ -47,12 +47,19 @@ inline vec2 barycentric_mix2(vec2 a, vec2 b, vec2 c, vec2 uv) {
     return (1.0f - uv.x - uv.y) * a + uv.x * b + uv.y * c;
 }
 
+inline vec4 barycentric_mix4(vec4 a, vec4 b, vec4 c, vec2 uv) {
+    return (1.0f - uv.x - uv.y) * a + uv.x * b + uv.y * c;
+}
+
 struct SurfacePoint {
     vec3 p;       // world position
     vec3 p_error; // bound on the float error of each coordinate of p (offset.h)
     vec3 ng;      // unit geometric normal, (v1 - v0) x (v2 - v0): the front (emitting) side
     vec3 ns;      // unit shading normal, on ng's side
-    vec2 uv;
+    vec2 uv;      // the mesh's uv sets (zero where it has none)
+    vec2 uv1;
+    vec3 tangent;   // the normal map's tangent frame in world space (zero where there is none):
+    vec3 bitangent; // the interpolated tangent and cross(normal, tangent) w, transformed
 };
 
 // What the error bound of a hit point needs from its instance (offset.h), a function of the
@@ -108,6 +115,9 @@ inline SurfacePoint surface_point_with(Instance t, InstanceErrorTerms e, vec3 v0
     s.ng = normalize(instance_normal_to_world(t, cross(v1 - v0, v2 - v0)));
     s.ns = s.ng;
     s.uv = vec2(0.0f);
+    s.uv1 = vec2(0.0f);
+    s.tangent = vec3(0.0f);
+    s.bitangent = vec3(0.0f);
     return s;
 }
 
@@ -146,6 +156,36 @@ inline void surface_set_shading_normal(INOUT(SurfacePoint) s, Instance t, vec3 n
     if (!(len > 0.0f)) return;
     n = n / len;
     s.ns = dot(n, s.ng) < 0.0f ? -n : n;
+}
+
+// The tangent frame of a normal map from the object-space interpolated normal n and tangent tg
+// (xyz, and the bitangent's sign in w): glTF 2.0, "Meshes": bitangent = cross(normal, tangent)
+// tangent.w. Both are surface directions, so they transform as vectors; the bitangent is formed
+// before the transform so that a mirroring instance keeps the frame's handedness.
+inline void surface_set_tangent_frame(INOUT(SurfacePoint) s, Instance t, vec3 n, vec4 tg) {
+    vec3 tangent = vec3(tg.x, tg.y, tg.z);
+    s.tangent = instance_vector_to_world(t, tangent);
+    s.bitangent = instance_vector_to_world(t, cross(n, tangent) * (tg.w < 0.0f ? -1.0f : 1.0f));
+}
+
+// Bends the shading normal by a tangent-space normal-map texel c (linear, in [0, 1]^3):
+// n' = normalize(T x + B y + N z) with (x, y, z) = (2 c - 1) (scale, scale, 1) (glTF 2.0,
+// "normalTexture"), T made orthogonal to the shading normal N and B = N x T on the side of the
+// frame's bitangent. Without a tangent frame, or for a texel that decodes to a zero vector, the
+// normal stays as it is.
+inline void surface_apply_normal_map(INOUT(SurfacePoint) s, vec3 c, float scale) {
+    vec3 n = s.ns;
+    vec3 t = s.tangent - n * dot(n, s.tangent);
+    float lt = length(t);
+    if (!(lt > 0.0f)) return;
+    t = t / lt;
+    vec3 b = cross(n, t);
+    if (dot(b, s.bitangent) < 0.0f) b = -b;
+    vec3 v = 2.0f * c - 1.0f;
+    vec3 m = (v.x * scale) * t + (v.y * scale) * b + v.z * n;
+    float lm = length(m);
+    if (!(lm > 0.0f)) return;
+    s.ns = m / lm;
 }
 
 // Two-sided shading for the reflective models: turns both normals to wo's side. When the

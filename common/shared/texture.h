@@ -1,6 +1,7 @@
-// Texture addressing shared by both engines: bilinear filtering of an RGB texel array and the
-// latitude-longitude parameterisation of environment maps. The engines fetch the four texels
-// themselves (a buffer in GLSL, a vector in C++) and blend them with texture_bilerp.
+// Texture addressing shared by both engines: a sampler's wrap modes, nearest and bilinear
+// footprints, the decoding of texel words, and the latitude-longitude parameterisation of
+// environment maps. The engines fetch the texels themselves (scene_access.h) and blend them
+// with texture_bilerp after decoding, so that sRGB texels are filtered in linear space.
 //
 // Image coordinates (s, t) are in [0, 1]^2 with t = 0 at the top row, texel (i, j) centred at
 // ((i + 0.5) / w, (j + 0.5) / h). OBJ uv has v = 0 at the bottom: use uv_to_image.
@@ -8,6 +9,7 @@
 #define TP_SHARED_TEXTURE_H
 
 #include "math.h"
+#include "types.h"
 
 TP_NAMESPACE_BEGIN
 
@@ -34,26 +36,30 @@ inline uint wrap_texel(float i, uint n) {
     return uint(r);
 }
 
-// Bilinear footprint with repeat addressing along s and, unless clamp_t, along t (an
-// environment map clamps at the poles).
-inline TexelFootprint texture_footprint(vec2 st, uint w, uint h, bool clamp_t) {
+// Texel index i (an integer-valued float) of an axis n texels long under a sampler's wrap mode
+// (SLOT_WRAP_*, types.h; glTF's REPEAT, CLAMP_TO_EDGE and MIRRORED_REPEAT: a mirrored axis
+// repeats with period 2n, its second half reversed).
+inline uint wrap_texel_mode(float i, uint n, uint mode) {
+    if (mode == SLOT_WRAP_CLAMP) return uint(clamp(i, 0.0f, float(n - 1u)));
+    if (mode == SLOT_WRAP_MIRROR) {
+        uint r = wrap_texel(i, 2u * n);
+        return r < n ? r : 2u * n - 1u - r;
+    }
+    return wrap_texel(i, n);
+}
+
+// Bilinear footprint under the wrap modes of s and t.
+inline TexelFootprint texture_footprint(vec2 st, uint w, uint h, uint wrap_s, uint wrap_t) {
     float x = st.x * float(w) - 0.5f;
     float y = st.y * float(h) - 0.5f;
     float x0 = floor(x);
     float y0 = floor(y);
     TexelFootprint fp;
     fp.f = vec2(x - x0, y - y0);
-    uint ix0 = wrap_texel(x0, w);
-    uint ix1 = ix0 + 1u == w ? 0u : ix0 + 1u;
-    uint iy0;
-    uint iy1;
-    if (clamp_t) {
-        iy0 = uint(clamp(y0, 0.0f, float(h - 1u)));
-        iy1 = uint(clamp(y0 + 1.0f, 0.0f, float(h - 1u)));
-    } else {
-        iy0 = wrap_texel(y0, h);
-        iy1 = iy0 + 1u == h ? 0u : iy0 + 1u;
-    }
+    uint ix0 = wrap_texel_mode(x0, w, wrap_s);
+    uint ix1 = wrap_texel_mode(x0 + 1.0f, w, wrap_s);
+    uint iy0 = wrap_texel_mode(y0, h, wrap_t);
+    uint iy1 = wrap_texel_mode(y0 + 1.0f, h, wrap_t);
     fp.i00 = iy0 * w + ix0;
     fp.i10 = iy0 * w + ix1;
     fp.i01 = iy1 * w + ix0;
@@ -61,8 +67,40 @@ inline TexelFootprint texture_footprint(vec2 st, uint w, uint h, bool clamp_t) {
     return fp;
 }
 
-inline vec3 texture_bilerp(vec3 c00, vec3 c10, vec3 c01, vec3 c11, vec2 f) {
+// The texel that contains st (a sampler's NEAREST filter).
+inline uint texture_nearest(vec2 st, uint w, uint h, uint wrap_s, uint wrap_t) {
+    return wrap_texel_mode(floor(st.y * float(h)), h, wrap_t) * w +
+           wrap_texel_mode(floor(st.x * float(w)), w, wrap_s);
+}
+
+inline vec4 texture_bilerp(vec4 c00, vec4 c10, vec4 c01, vec4 c11, vec2 f) {
     return mix(mix(c00, c10, f.x), mix(c01, c11, f.x), f.y);
+}
+
+// ---- texel decoding --------------------------------------------------------------------------
+// An 8-bit texel word (TEXEL_RGBA8, R in the low byte) as four values in [0, 1]; a product with
+// 1/255 rather than GLSL's unpackUnorm4x8, whose rounding a device may choose, so that both
+// engines decode the same floats.
+inline vec4 unpack_rgba8(uint w) {
+    return vec4(float(w & 0xFFu), float((w >> 8u) & 0xFFu), float((w >> 16u) & 0xFFu),
+                float(w >> 24u)) *
+           (1.0f / 255.0f);
+}
+
+// A 16-bit texel's two words (TEXEL_RGBA16) as four values in [0, 1].
+inline vec4 unpack_rgba16(uint rg, uint ba) {
+    return vec4(float(rg & 0xFFFFu), float(rg >> 16u), float(ba & 0xFFFFu), float(ba >> 16u)) *
+           (1.0f / 65535.0f);
+}
+
+// The sRGB transfer function's inverse (IEC 61966-2-1): encoded value to linear.
+inline float srgb_to_linear(float c) {
+    if (c <= 0.04045f) return c * (1.0f / 12.92f);
+    return pow((c + 0.055f) * (1.0f / 1.055f), 2.4f);
+}
+
+inline vec4 srgb_to_linear4(vec4 c) {
+    return vec4(srgb_to_linear(c.x), srgb_to_linear(c.y), srgb_to_linear(c.z), c.w);
 }
 
 // ---- latitude-longitude environment maps ----------------------------------------------------

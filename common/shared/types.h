@@ -16,16 +16,43 @@ const int NO_TEXTURE = -1;
 const uint MATERIAL_PHONG = 0u;      // modified Phong, Lafortune & Willems 1994
 const uint MATERIAL_MIRROR = 1u;     // perfect specular reflection tinted by ks
 const uint MATERIAL_DIELECTRIC = 2u; // smooth dielectric: Fresnel reflection + refraction
+const uint MATERIAL_PBR = 3u;        // glTF 2.0 metallic-roughness (pbr.h)
 
+// Material::flags
+const uint MATERIAL_FLAG_VOLUME = 1u; // PBR: a volume boundary (KHR_materials_volume), not thin
+
+// Material::alpha_mode: glTF's alphaMode, alpha as coverage (alpha.h)
+const uint ALPHA_OPAQUE = 0u;
+const uint ALPHA_MASK = 1u;  // the surface is there where alpha >= alpha_cutoff
+const uint ALPHA_BLEND = 2u; // the surface is there with probability alpha
+
+// Every material kind uses the first 64 bytes; MATERIAL_PBR reads the rest too. A texture field
+// is an index into the texture-slot table (TextureSlot) or NO_TEXTURE.
 struct Material {
-    vec3 kd;        // diffuse reflectance; multiplied by texture kd_texture when it is set
-    int kd_texture; // index into the texture table or NO_TEXTURE
-    vec3 ks;        // Phong specular reflectance, or the mirror's tint
+    vec3 kd;        // diffuse reflectance; PBR: base colour (linear RGB)
+    int kd_texture; // multiplies kd: map_Kd, baseColorTexture (its alpha multiplies alpha)
+    vec3 ks;        // Phong specular reflectance; the mirror's tint; PBR: specular colour
     float ns;       // Phong exponent
     vec3 ke;        // emitted radiance (W m^-2 sr^-1), front face only
-    float ior;      // dielectric index of refraction relative to the outside
-    vec3 tf;        // dielectric transmission filter
+    float ior;      // dielectric and PBR: index of refraction relative to the outside
+    vec3 tf;        // dielectric: transmission filter; PBR: attenuation colour of the volume
     uint type;      // MATERIAL_*
+    float metallic;
+    float roughness; // glTF roughness: the GGX width is its square
+    float transmission;
+    float specular;             // KHR_materials_specular's specularFactor
+    float alpha;                // coverage: baseColorFactor's alpha
+    float alpha_cutoff;         // ALPHA_MASK's threshold
+    uint alpha_mode;            // ALPHA_*
+    float attenuation_distance; // PBR volume: Beer-Lambert distance, FLOAT_MAX for none
+    int metallic_roughness_texture; // B: metallic, G: roughness (linear)
+    int normal_texture;             // tangent-space normal map, scaled by normal_scale
+    int emissive_texture;           // multiplies ke (sRGB)
+    int transmission_texture;       // R multiplies transmission (linear)
+    int specular_texture;           // A multiplies specular (linear)
+    int specular_color_texture;     // RGB multiplies ks (sRGB)
+    float normal_scale;
+    uint flags; // MATERIAL_FLAG_*
 };
 
 // ---- lights ------------------------------------------------------------------------------
@@ -33,6 +60,9 @@ const uint LIGHT_POINT = 0u;       // p0 position, value intensity I (W/sr)
 const uint LIGHT_DIRECTIONAL = 1u; // p0 unit direction towards the light, value irradiance (W/m^2)
 const uint LIGHT_TRIANGLE = 2u;    // p0..p2 world vertices (CCW = front), value radiance
 const uint LIGHT_ENVIRONMENT = 3u; // value radiance scale; RenderParams holds the map
+// p0 position, p1 unit direction of the cone's axis, p2.xy the cone's angular scale and offset
+// (lights.h, spot_light_falloff), value intensity I on the axis (W/sr)
+const uint LIGHT_SPOT = 4u;
 
 struct Light {
     vec3 p0;
@@ -57,6 +87,8 @@ struct AliasEntry {
 // ---- geometry ----------------------------------------------------------------------------
 const uint MESH_HAS_NORMALS = 1u;
 const uint MESH_HAS_UVS = 2u;
+const uint MESH_HAS_UV1 = 4u;      // a second uv set
+const uint MESH_HAS_TANGENTS = 8u; // tangents (xyz) and bitangent sign (w) for normal maps
 
 struct MeshInfo {
     uint first_triangle; // into the triangle-index array
@@ -83,11 +115,36 @@ struct Instance {
 };
 
 // ---- textures ----------------------------------------------------------------------------
+// An image: its texels in the texel word array, in one of two formats.
+const uint TEXEL_RGBA8 = 0u;   // one word per texel, R in the low byte (an 8-bit image)
+const uint TEXEL_RGBA32F = 1u; // four words per texel, the float bits of R, G, B, A
+const uint TEXEL_RGBA16 = 2u;  // two words per texel, R | G << 16 and B | A << 16 (16-bit)
+
 struct TextureInfo {
-    uint offset; // first texel (RGB float) in the texel array
+    uint offset; // first word in the texel word array
     uint width;
     uint height;
-    uint pad0;
+    uint format; // TEXEL_*
+};
+
+// TextureSlot::sampling bits: the sampler's wrap mode per axis, its filter, the uv set, and
+// whether 8-bit texels are sRGB-encoded colour (glTF's colour slots) or linear data.
+const uint SLOT_WRAP_REPEAT = 0u;
+const uint SLOT_WRAP_CLAMP = 1u;
+const uint SLOT_WRAP_MIRROR = 2u;
+const uint SLOT_WRAP_T_SHIFT = 2u; // wrap s in bits 0-1, wrap t in bits 2-3
+const uint SLOT_NEAREST = 16u;     // nearest texel instead of bilinear
+const uint SLOT_UV1 = 32u;         // the second uv set (glTF TEXCOORD_1)
+const uint SLOT_SRGB = 64u;        // 8-bit texels hold sRGB-encoded colour
+
+// A texture as a material reads it: the image, the affine map from the mesh's uv to image
+// coordinates (s, t) (t = 0 at the top row, texture.h), which takes the format's uv convention
+// and KHR_texture_transform, and how it is sampled.
+struct TextureSlot {
+    vec3 transform_s; // s = dot(transform_s, vec3(uv, 1))
+    uint image;       // index into the image table (TextureInfo)
+    vec3 transform_t; // t = dot(transform_t, vec3(uv, 1))
+    uint sampling;    // SLOT_*
 };
 
 // ---- camera and render parameters ---------------------------------------------------------
@@ -119,12 +176,16 @@ struct RenderParams {
 };
 
 #ifdef __cplusplus
-static_assert(sizeof(Material) == 64 && offsetof(Material, type) == 60, "Material layout");
+static_assert(sizeof(Material) == 128 && offsetof(Material, type) == 60 &&
+                  offsetof(Material, flags) == 124,
+              "Material layout");
 static_assert(sizeof(Light) == 80 && offsetof(Light, normal) == 64, "Light layout");
 static_assert(sizeof(AliasEntry) == 12, "AliasEntry layout");
 static_assert(sizeof(MeshInfo) == 32, "MeshInfo layout");
 static_assert(sizeof(Instance) == 112 && offsetof(Instance, mesh) == 96, "Instance layout");
 static_assert(sizeof(TextureInfo) == 16, "TextureInfo layout");
+static_assert(sizeof(TextureSlot) == 32 && offsetof(TextureSlot, sampling) == 28,
+              "TextureSlot layout");
 static_assert(sizeof(Camera) == 64 && offsetof(Camera, height) == 60, "Camera layout");
 static_assert(sizeof(RenderParams) == 112 && offsetof(RenderParams, sampler_id) == 96,
               "RenderParams layout");

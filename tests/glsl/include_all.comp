@@ -6,6 +6,7 @@
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
 
+#include "shared/alpha.h"
 #include "shared/brdf.h"
 #include "shared/camera.h"
 #include "shared/features.h"
@@ -13,9 +14,11 @@
 #include "shared/lang.h"
 #include "shared/lights.h"
 #include "shared/math.h"
+#include "shared/microfacet.h"
 #include "shared/offset.h"
 #include "shared/path.h"
 #include "shared/path_log.h"
+#include "shared/pbr.h"
 #include "shared/rng.h"
 #include "shared/roulette.h"
 #include "shared/sampling.h"
@@ -34,9 +37,12 @@ layout(scalar, binding = 4) readonly buffer T { uvec3 triangles[]; };
 layout(scalar, binding = 5) readonly buffer P { vec3 positions[]; };
 layout(scalar, binding = 6) readonly buffer N { vec3 normals[]; };
 layout(scalar, binding = 7) readonly buffer U { vec2 uvs[]; };
+layout(scalar, binding = 14) readonly buffer U1 { vec2 uvs1[]; };
+layout(scalar, binding = 15) readonly buffer Tg { vec4 tangents[]; };
+layout(scalar, binding = 16) readonly buffer Sl { TextureSlot texture_slots[]; };
 layout(scalar, binding = 8) readonly buffer Ma { Material materials[]; };
 layout(scalar, binding = 9) readonly buffer Tx { TextureInfo textures[]; };
-layout(scalar, binding = 10) readonly buffer Te { vec3 texels[]; };
+layout(scalar, binding = 10) readonly buffer Te { uint texel_words[]; };
 layout(scalar, binding = 11) readonly buffer L { Light lights[]; };
 layout(scalar, binding = 12) readonly buffer LT { AliasEntry light_table[]; };
 layout(scalar, binding = 13) readonly buffer ET { AliasEntry env_table[]; };
