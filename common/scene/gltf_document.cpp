@@ -193,42 +193,101 @@ GltfTextureRef read_texture_ref(const Reader& r, const json& j, const std::strin
     return t;
 }
 
+// Three numbers in [lo, hi] as a colour.
+vec3 read_color(const Reader& r, const json& j, const std::string& field, double lo, double hi) {
+    const std::vector<double> v = r.numbers(j, field, 3, lo, hi);
+    return vec3(float(v[0]), float(v[1]), float(v[2]));
+}
+
+// The textureInfo `key` of object j, if given.
+void read_texture_slot(const Reader& r, const json& j, const std::string& field, const char* key,
+                       size_t textures, GltfTextureRef& out) {
+    if (const json* t = Reader::find(j, key))
+        out = read_texture_ref(r, *t, Reader::at(field, key), textures);
+}
+
+void read_pbr_metallic_roughness(const Reader& r, const json& j, const std::string& field,
+                                 size_t textures, GltfMaterial& m) {
+    r.object(j, field);
+    if (const json* c = Reader::find(j, "baseColorFactor")) {
+        const std::vector<double> v = r.numbers(*c, Reader::at(field, "baseColorFactor"), 4, 0, 1);
+        m.base_color = vec3(float(v[0]), float(v[1]), float(v[2]));
+        m.base_alpha = float(v[3]);
+    }
+    read_texture_slot(r, j, field, "baseColorTexture", textures, m.base_color_texture);
+    if (const json* v = Reader::find(j, "metallicFactor"))
+        m.metallic = float(r.number(*v, Reader::at(field, "metallicFactor"), 0, 1));
+    if (const json* v = Reader::find(j, "roughnessFactor"))
+        m.roughness = float(r.number(*v, Reader::at(field, "roughnessFactor"), 0, 1));
+    read_texture_slot(r, j, field, "metallicRoughnessTexture", textures,
+                      m.metallic_roughness_texture);
+}
+
+// The material extensions twinpath reads; any other is listed as unused.
+void read_material_extension(const Reader& r, const json& x, const std::string& name,
+                             const std::string& f, size_t textures, GltfMaterial& m) {
+    if (name == "KHR_materials_emissive_strength") {
+        if (const json* s = Reader::find(x, "emissiveStrength"))
+            m.emissive_strength = float(r.number(*s, Reader::at(f, "emissiveStrength"), 0, kMax));
+    } else if (name == "KHR_materials_transmission") {
+        if (const json* t = Reader::find(x, "transmissionFactor"))
+            m.transmission = float(r.number(*t, Reader::at(f, "transmissionFactor"), 0, 1));
+        read_texture_slot(r, x, f, "transmissionTexture", textures, m.transmission_texture);
+    } else if (name == "KHR_materials_ior") {
+        if (const json* i = Reader::find(x, "ior")) {
+            const std::string fi = Reader::at(f, "ior");
+            m.ior = float(r.number(*i, fi, 0, kMax));
+            if (m.ior != 0.0f && m.ior < 1.0f)
+                r.fail(fi, fmt::format("must be 0 or at least 1, got {}", m.ior));
+        }
+    } else if (name == "KHR_materials_specular") {
+        if (const json* s = Reader::find(x, "specularFactor"))
+            m.specular = float(r.number(*s, Reader::at(f, "specularFactor"), 0, 1));
+        if (const json* c = Reader::find(x, "specularColorFactor"))
+            m.specular_color = read_color(r, *c, Reader::at(f, "specularColorFactor"), 0, kMax);
+        read_texture_slot(r, x, f, "specularTexture", textures, m.specular_texture);
+        read_texture_slot(r, x, f, "specularColorTexture", textures, m.specular_color_texture);
+    } else if (name == "KHR_materials_volume") {
+        if (const json* t = Reader::find(x, "thicknessFactor"))
+            m.thickness = float(r.number(*t, Reader::at(f, "thicknessFactor"), 0, kMax));
+        if (const json* t = Reader::find(x, "thicknessTexture")) {
+            read_texture_ref(r, *t, Reader::at(f, "thicknessTexture"), textures);
+            m.ignored.push_back("KHR_materials_volume.thicknessTexture");
+        }
+        if (const json* c = Reader::find(x, "attenuationColor"))
+            m.attenuation_color = read_color(r, *c, Reader::at(f, "attenuationColor"), 0, 1);
+        if (const json* d = Reader::find(x, "attenuationDistance")) {
+            const std::string fd = Reader::at(f, "attenuationDistance");
+            m.attenuation_distance = float(r.number(*d, fd, 0, kMax));
+            if (!(m.attenuation_distance > 0.0f)) r.fail(fd, "must be greater than 0");
+        }
+    } else {
+        m.unused.push_back(clip(name));
+    }
+}
+
 GltfMaterial read_material(const Reader& r, const json& j, const std::string& field,
                            size_t textures) {
     GltfMaterial m;
     m.name = r.name(j, field);
-    if (const json* pbr = Reader::find(j, "pbrMetallicRoughness")) {
-        const std::string f = Reader::at(field, "pbrMetallicRoughness");
-        r.object(*pbr, f);
-        if (const json* c = Reader::find(*pbr, "baseColorFactor")) {
-            const std::vector<double> v = r.numbers(*c, Reader::at(f, "baseColorFactor"), 4, 0, 1);
-            m.base_color = vec3(float(v[0]), float(v[1]), float(v[2]));
-            m.base_alpha = float(v[3]);
-        }
-        if (const json* t = Reader::find(*pbr, "baseColorTexture"))
-            m.base_color_texture =
-                read_texture_ref(r, *t, Reader::at(f, "baseColorTexture"), textures);
-        if (const json* v = Reader::find(*pbr, "metallicFactor"))
-            m.metallic = float(r.number(*v, Reader::at(f, "metallicFactor"), 0, 1));
-        if (const json* v = Reader::find(*pbr, "roughnessFactor"))
-            m.roughness = float(r.number(*v, Reader::at(f, "roughnessFactor"), 0, 1));
-        if (const json* t = Reader::find(*pbr, "metallicRoughnessTexture")) {
-            read_texture_ref(r, *t, Reader::at(f, "metallicRoughnessTexture"), textures);
-            m.unused.push_back("metallicRoughnessTexture");
-        }
+    if (const json* pbr = Reader::find(j, "pbrMetallicRoughness"))
+        read_pbr_metallic_roughness(r, *pbr, Reader::at(field, "pbrMetallicRoughness"), textures,
+                                    m);
+    read_texture_slot(r, j, field, "normalTexture", textures, m.normal_texture);
+    if (const json* n = Reader::find(j, "normalTexture"))
+        if (const json* s = Reader::find(*n, "scale"))
+            m.normal_scale =
+                float(r.number(*s, Reader::at(Reader::at(field, "normalTexture"), "scale")));
+    if (const json* t = Reader::find(j, "occlusionTexture")) {
+        const std::string f = Reader::at(field, "occlusionTexture");
+        read_texture_ref(r, *t, f, textures);
+        if (const json* s = Reader::find(*t, "strength"))
+            r.number(*s, Reader::at(f, "strength"), 0, 1);
+        m.ignored.push_back("occlusionTexture");
     }
-    for (const char* key : {"normalTexture", "occlusionTexture"})
-        if (const json* t = Reader::find(j, key)) {
-            read_texture_ref(r, *t, Reader::at(field, key), textures);
-            m.unused.push_back(key);
-        }
-    if (const json* e = Reader::find(j, "emissiveFactor")) {
-        const std::vector<double> v = r.numbers(*e, Reader::at(field, "emissiveFactor"), 3, 0, 1);
-        m.emissive = vec3(float(v[0]), float(v[1]), float(v[2]));
-    }
-    if (const json* t = Reader::find(j, "emissiveTexture"))
-        m.emissive_texture =
-            read_texture_ref(r, *t, Reader::at(field, "emissiveTexture"), textures);
+    if (const json* e = Reader::find(j, "emissiveFactor"))
+        m.emissive = read_color(r, *e, Reader::at(field, "emissiveFactor"), 0, 1);
+    read_texture_slot(r, j, field, "emissiveTexture", textures, m.emissive_texture);
     if (const json* a = Reader::find(j, "alphaMode")) {
         m.alpha_mode = r.string(*a, Reader::at(field, "alphaMode"));
         if (m.alpha_mode != "OPAQUE" && m.alpha_mode != "MASK" && m.alpha_mode != "BLEND")
@@ -236,45 +295,13 @@ GltfMaterial read_material(const Reader& r, const json& j, const std::string& fi
                    fmt::format("'{}' is not OPAQUE, MASK or BLEND", clip(m.alpha_mode)));
     }
     if (const json* c = Reader::find(j, "alphaCutoff"))
-        r.number(*c, Reader::at(field, "alphaCutoff"), 0, kMax);
+        m.alpha_cutoff = float(r.number(*c, Reader::at(field, "alphaCutoff"), 0, kMax));
     if (const json* d = Reader::find(j, "doubleSided"))
         r.boolean(*d, Reader::at(field, "doubleSided"));
-
-    const std::string ext = Reader::at(field, "extensions");
-    for (const std::string& name : r.extension_names(j, field)) {
-        const json& x = *r.extension(j, field, name.c_str());
-        const std::string f = Reader::at(ext, name.c_str());
-        if (name == "KHR_materials_emissive_strength") {
-            if (const json* s = Reader::find(x, "emissiveStrength"))
-                m.emissive_strength =
-                    float(r.number(*s, Reader::at(f, "emissiveStrength"), 0, kMax));
-        } else if (name == "KHR_materials_transmission") {
-            if (const json* t = Reader::find(x, "transmissionFactor"))
-                m.transmission = float(r.number(*t, Reader::at(f, "transmissionFactor"), 0, 1));
-            if (const json* t = Reader::find(x, "transmissionTexture")) {
-                read_texture_ref(r, *t, Reader::at(f, "transmissionTexture"), textures);
-                m.unused.push_back("KHR_materials_transmission.transmissionTexture");
-            }
-        } else if (name == "KHR_materials_ior") {
-            if (const json* i = Reader::find(x, "ior"))
-                m.ior = float(r.number(*i, Reader::at(f, "ior"), 1, 100));
-        } else if (name == "KHR_materials_specular") {
-            if (const json* s = Reader::find(x, "specularFactor"))
-                m.specular = float(r.number(*s, Reader::at(f, "specularFactor"), 0, 1));
-            if (const json* c = Reader::find(x, "specularColorFactor")) {
-                const std::vector<double> v =
-                    r.numbers(*c, Reader::at(f, "specularColorFactor"), 3, 0, kMax);
-                m.specular_color = vec3(float(v[0]), float(v[1]), float(v[2]));
-            }
-            for (const char* key : {"specularTexture", "specularColorTexture"})
-                if (const json* t = Reader::find(x, key)) {
-                    read_texture_ref(r, *t, Reader::at(f, key), textures);
-                    m.unused.push_back(std::string("KHR_materials_specular.") + key);
-                }
-        } else {
-            m.unused.push_back(clip(name));
-        }
-    }
+    for (const std::string& name : r.extension_names(j, field))
+        read_material_extension(r, *r.extension(j, field, name.c_str()), name,
+                                Reader::at(Reader::at(field, "extensions"), name.c_str()), textures,
+                                m);
     return m;
 }
 
@@ -515,6 +542,20 @@ void read_images_and_textures(const Reader& r, const json& root, GltfDocument& d
         for (const auto& [key, out] : fields)
             if (const json* v = Reader::find(samplers[i], key))
                 *out = uint32_t(r.integer(*v, Reader::at(f, key), 0, 1u << 30));
+        // The values the specification allows (section 5.26).
+        if (s.mag_filter != 0 && s.mag_filter != GLTF_NEAREST && s.mag_filter != GLTF_LINEAR)
+            r.fail(Reader::at(f, "magFilter"),
+                   fmt::format("{} is not 9728 (NEAREST) or 9729 (LINEAR)", s.mag_filter));
+        if (s.min_filter != 0 && s.min_filter != GLTF_NEAREST && s.min_filter != GLTF_LINEAR &&
+            (s.min_filter < 9984 || s.min_filter > 9987))
+            r.fail(Reader::at(f, "minFilter"),
+                   fmt::format("{} is not 9728, 9729 or 9984 to 9987", s.min_filter));
+        for (const auto& [key, wrap] : {std::pair("wrapS", s.wrap_s), std::pair("wrapT", s.wrap_t)})
+            if (wrap != GLTF_REPEAT && wrap != GLTF_CLAMP_TO_EDGE && wrap != GLTF_MIRRORED_REPEAT)
+                r.fail(Reader::at(f, key),
+                       fmt::format("{} is not 10497 (REPEAT), 33071 (CLAMP_TO_EDGE) or 33648 "
+                                   "(MIRRORED_REPEAT)",
+                                   wrap));
         d.samplers.push_back(s);
     }
     const json& textures = top_array(r, root, "textures");
@@ -561,6 +602,23 @@ void read_meshes(const Reader& r, const json& root, GltfDocument& d) {
         }
         d.meshes.push_back(std::move(m));
     }
+}
+
+// KHR_lights_punctual's spot: 0 <= innerConeAngle < outerConeAngle <= pi / 2.
+void read_spot_cone(const Reader& r, const json& j, const std::string& field, GltfLight& l) {
+    r.object(j, field);
+    constexpr double kHalfPi = 1.5707963267948966;
+    const std::string fi = Reader::at(field, "innerConeAngle"),
+                      fo = Reader::at(field, "outerConeAngle");
+    if (const json* v = Reader::find(j, "innerConeAngle"))
+        l.inner_cone = float(r.number(*v, fi, 0, kHalfPi));
+    if (const json* v = Reader::find(j, "outerConeAngle")) {
+        l.outer_cone = float(r.number(*v, fo, 0, kHalfPi));
+        if (!(l.outer_cone > 0.0f)) r.fail(fo, "must be greater than 0");
+    }
+    if (!(l.inner_cone < l.outer_cone))
+        r.fail(fi,
+               fmt::format("{} must be less than outerConeAngle {}", l.inner_cone, l.outer_cone));
 }
 
 void read_cameras_and_lights(const Reader& r, const json& root, GltfDocument& d) {
@@ -617,6 +675,11 @@ void read_cameras_and_lights(const Reader& r, const json& root, GltfDocument& d)
             if (!(r.number(*v, Reader::at(f, "range"), 0, kMax) > 0.0))
                 r.fail(Reader::at(f, "range"), "must be greater than 0");
             l.has_range = true;
+        }
+        if (l.type == "spot") {
+            static const json none = json::object(); // the cones' defaults
+            const json* spot = Reader::find(j, "spot");
+            read_spot_cone(r, spot ? *spot : none, Reader::at(f, "spot"), l);
         }
         d.lights.push_back(l);
     }
@@ -694,9 +757,10 @@ void read_nodes_and_scenes(const Reader& r, const json& root, GltfDocument& d) {
 
 const std::vector<std::string>& gltf_supported_extensions() {
     static const std::vector<std::string> list = {
-        "KHR_lights_punctual",    "KHR_materials_emissive_strength", "KHR_materials_ior",
-        "KHR_materials_specular", "KHR_materials_transmission",      "KHR_mesh_quantization",
-        "KHR_texture_transform"};
+        "KHR_lights_punctual",        "KHR_materials_emissive_strength",
+        "KHR_materials_ior",          "KHR_materials_specular",
+        "KHR_materials_transmission", "KHR_materials_volume",
+        "KHR_mesh_quantization",      "KHR_texture_transform"};
     return list;
 }
 

@@ -18,6 +18,7 @@
 #include <nlohmann/json.hpp>
 
 #include <cstdint>
+#include <limits>
 #include <map>
 #include <string>
 #include <vector>
@@ -72,21 +73,26 @@ struct GltfTexture {
     std::vector<std::string> source_extensions; // extensions of the texture (KHR_texture_basisu)
 };
 
+// glTF sampler constants (section 5.26).
+constexpr uint32_t GLTF_NEAREST = 9728, GLTF_LINEAR = 9729, GLTF_REPEAT = 10497,
+                   GLTF_CLAMP_TO_EDGE = 33071, GLTF_MIRRORED_REPEAT = 33648;
+
 struct GltfSampler {
-    uint32_t mag_filter = 0, min_filter = 0; // 0: undefined
-    uint32_t wrap_s = 10497, wrap_t = 10497; // REPEAT
+    uint32_t mag_filter = 0, min_filter = 0;             // 0: undefined
+    uint32_t wrap_s = GLTF_REPEAT, wrap_t = GLTF_REPEAT; // checked to be a glTF wrap mode
 };
 
-// A textureInfo: a texture, its uv set and KHR_texture_transform.
+// A textureInfo: a texture, its uv set and KHR_texture_transform; texture GLTF_NONE when the
+// material does not give it.
 struct GltfTextureRef {
     int texture = GLTF_NONE;
-    uint32_t tex_coord = 0;
+    uint32_t tex_coord = 0; // KHR_texture_transform's texCoord where it gives one
     bool transformed = false;
     glm::dmat3 transform{1.0}; // uv -> uv: T(offset) R(rotation) S(scale), as the extension
     std::string field;         // where it was given: "materials[2].emissiveTexture"
 };
 
-// A glTF material's parameters (metallic-roughness model and the extensions twinpath maps);
+// A glTF material's parameters: the metallic-roughness model and the extensions twinpath reads,
 // defaults as the specification gives them.
 struct GltfMaterial {
     std::string name;
@@ -95,16 +101,28 @@ struct GltfMaterial {
     GltfTextureRef base_color_texture;
     float metallic = 1.0f;
     float roughness = 1.0f;
+    GltfTextureRef metallic_roughness_texture;
+    GltfTextureRef normal_texture;
+    float normal_scale = 1.0f; // normalTexture.scale
     vec3 emissive{0.0f};
     GltfTextureRef emissive_texture;
     float emissive_strength = 1.0f; // KHR_materials_emissive_strength
     std::string alpha_mode = "OPAQUE";
+    float alpha_cutoff = 0.5f;
     float transmission = 0.0f; // KHR_materials_transmission
-    float ior = 1.5f;          // KHR_materials_ior
-    float specular = 1.0f;     // KHR_materials_specular
+    GltfTextureRef transmission_texture;
+    float ior = 1.5f;      // KHR_materials_ior; 0 is its specular-glossiness mode (infinite ior)
+    float specular = 1.0f; // KHR_materials_specular
+    GltfTextureRef specular_texture;
     vec3 specular_color{1.0f};
-    // What the material gives and twinpath does not use, as property names.
-    std::vector<std::string> unused; // "normalTexture", "KHR_materials_clearcoat", ...
+    GltfTextureRef specular_color_texture;
+    float thickness = 0.0f; // KHR_materials_volume: 0 is thin-walled
+    vec3 attenuation_color{1.0f};
+    float attenuation_distance = std::numeric_limits<float>::infinity();
+    // What the material gives that a path tracer has no use for, as property names
+    // ("occlusionTexture"), and what it gives that twinpath does not read (extensions).
+    std::vector<std::string> ignored;
+    std::vector<std::string> unused;
 };
 
 struct GltfPrimitive {
@@ -143,6 +161,8 @@ struct GltfLight {
     vec3 color{1.0f};
     float intensity = 1.0f; // candela (point, spot) or lux (directional)
     bool has_range = false;
+    float inner_cone = 0.0f;       // spot.innerConeAngle (radians)
+    float outer_cone = 0.7853982f; // spot.outerConeAngle, pi / 4 by default
 };
 
 struct GltfDocument {

@@ -5,7 +5,9 @@
 #include "scene/gltf_document.h"
 #include "scene/gltf_material.h"
 #include "scene/gltf_resources.h"
+#include "scene/gltf_textures.h"
 #include "scene/json_reader.h"
+#include "scene/tangents.h"
 #include "scene/text_parse.h"
 #include "shared/math.h"
 #include "util/error.h"
@@ -25,13 +27,11 @@ namespace {
 
 constexpr uint32_t kModeTriangles = 4, kModeStrip = 5, kModeFan = 6;
 
-// How a material's base colour texture is addressed: the uv set and KHR_texture_transform.
-struct UvUse {
-    bool textured = false;
-    uint32_t tex_coord = 0;
-    bool transformed = false;
-    glm::dmat3 transform{1.0};
-    std::string field;
+// What a material's texture slots need of the meshes it is on: the uv sets they read and,
+// for a normal map, a tangent frame.
+struct SlotNeeds {
+    std::string uv_field[2];      // a textureInfo that reads TEXCOORD_n; empty: none does
+    int normal_slot = NO_TEXTURE; // the normal map's slot
 };
 
 std::string read_bytes(const std::string& path) {
@@ -59,84 +59,32 @@ class Builder {
         note_scene_level();
     }
 
-    // Scene-level notes, deduplicated and in a stable order.
-    std::set<std::string> notes;
+    // Scene-level notes, deduplicated and in a stable order: what is not rendered, and what a
+    // path tracer ignores.
+    std::set<std::string> notes, ignored;
 
   private:
     void note(const std::string& n) { notes.insert(n); }
 
     // ---- materials and textures --------------------------------------------------------------
 
-    // The decoded image of texture reference `ref`, or nullptr (with a note) when the texture
-    // has no image twinpath can decode.
-    const Texture* image_of(const GltfTextureRef& ref, std::vector<std::string>& dropped) {
-        const GltfTexture& t = d_.textures[size_t(ref.texture)];
-        if (t.source == GLTF_NONE) {
-            std::string exts;
-            for (const std::string& e : t.source_extensions)
-                exts += (exts.empty() ? "" : ", ") + clip(e);
-            dropped.push_back(fmt::format("{}: textures[{}] has no image twinpath decodes{}",
-                                          ref.field, ref.texture,
-                                          exts.empty() ? "" : " (its image is in " + exts + ")"));
-            return nullptr;
-        }
-        if (t.sampler != GLTF_NONE) {
-            const GltfSampler& sm = d_.samplers[size_t(t.sampler)];
-            if (sm.wrap_s != 10497 || sm.wrap_t != 10497)
-                note(fmt::format("samplers[{}]: wrap modes {}, {}: twinpath repeats textures",
-                                 t.sampler, sm.wrap_s, sm.wrap_t));
-            if (sm.mag_filter == 9728)
-                note(fmt::format("samplers[{}]: magFilter NEAREST: twinpath filters bilinearly",
-                                 t.sampler));
-        }
-        const uint32_t image = uint32_t(t.source);
-        auto it = decoded_.find(image);
-        if (it == decoded_.end())
-            it = decoded_.emplace(image, res_.decode_srgb_image(image, ref.field)).first;
-        return &it->second;
-    }
-
-    // The scene texture of `ref`'s image (added once per image), or NO_TEXTURE.
-    int scene_texture(const GltfTextureRef& ref, std::vector<std::string>& dropped) {
-        const Texture* img = image_of(ref, dropped);
-        if (!img) return NO_TEXTURE;
-        const uint32_t image = uint32_t(d_.textures[size_t(ref.texture)].source);
-        auto it = texture_of_image_.find(image);
-        if (it == texture_of_image_.end()) {
-            s_.textures.push_back(*img);
-            it = texture_of_image_.emplace(image, int(s_.textures.size() - 1)).first;
-        }
-        return it->second;
-    }
-
     void add_material(const GltfMaterial& gm, const std::string& name, const std::string& field) {
-        std::vector<std::string> dropped;
-        vec3 emissive_mean(1.0f);
-        if (gm.emissive_texture.texture != GLTF_NONE) {
-            if (const Texture* img = image_of(gm.emissive_texture, dropped)) {
-                glm::dvec3 sum(0.0);
-                for (const vec3& c : img->texels) sum += glm::dvec3(c);
-                emissive_mean = vec3(sum / double(img->texels.size()));
-            }
+        GltfMaterialMapping m = map_gltf_material(gm);
+        SlotNeeds needs;
+        for (const GltfTextureUse& use : gltf_material_textures(gm)) {
+            const int slot = textures_.slot(*use.ref, use.srgb, m.dropped, m.ignored);
+            m.material.*use.field = slot;
+            if (slot == NO_TEXTURE) continue;
+            const bool uv1 = (s_.texture_slots[size_t(slot)].sampling & SLOT_UV1) != 0u;
+            if (needs.uv_field[uv1].empty()) needs.uv_field[uv1] = use.ref->field;
         }
-        GltfMaterialMapping m = map_gltf_material(gm, emissive_mean);
-        UvUse uv;
-        if (m.uses_base_color_texture) {
-            m.material.kd_texture = scene_texture(gm.base_color_texture, dropped);
-            if (m.material.kd_texture != NO_TEXTURE) {
-                uv.textured = true;
-                uv.tex_coord = gm.base_color_texture.tex_coord;
-                uv.transformed = gm.base_color_texture.transformed;
-                uv.transform = gm.base_color_texture.transform;
-                uv.field = gm.base_color_texture.field;
-            }
-        }
-        dropped.insert(dropped.end(), m.dropped.begin(), m.dropped.end());
+        needs.normal_slot = m.material.normal_texture;
         validate_material(m.material, fmt::format("{}: {}", d_.path, field));
         s_.materials.push_back(m.material);
         s_.material_names.push_back(name);
-        s_.material_dropped.push_back(std::move(dropped));
-        uv_of_material_.push_back(uv);
+        s_.material_dropped.push_back(std::move(m.dropped));
+        s_.material_ignored.push_back(std::move(m.ignored));
+        needs_of_material_.push_back(needs);
     }
 
     void convert_materials() {
@@ -222,6 +170,8 @@ class Builder {
             out.positions.push_back(m.positions[v]);
             if (!m.normals.empty()) out.normals.push_back(m.normals[v]);
             if (!m.uvs.empty()) out.uvs.push_back(m.uvs[v]);
+            if (!m.uvs1.empty()) out.uvs1.push_back(m.uvs1[v]);
+            if (!m.tangents.empty()) out.tangents.push_back(m.tangents[v]);
         }
         for (const uvec3& t : m.triangles)
             out.triangles.push_back({remap[t.x], remap[t.y], remap[t.z]});
@@ -229,25 +179,29 @@ class Builder {
     }
 
     // The scene mesh of primitive k of mesh i, or NO_INDEX when it is not rendered. Primitives
-    // with the same geometry (accessors, topology and uv use) share one scene mesh, whichever
+    // with the same geometry (accessors, topology, and what their materials' slots read: the uv
+    // sets, the tangents and the map they are generated for) share one scene mesh, whichever
     // glTF mesh holds them: assets reuse accessors under meshes that differ only in material.
     uint32_t primitive_mesh(uint32_t mi, uint32_t k) {
         const GltfPrimitive& p = d_.meshes[mi].primitives[k];
-        const UvUse& uv = uv_of_material_[material_of(p)];
+        const SlotNeeds& needs = needs_of_material_[material_of(p)];
         auto accessor = [&](const std::string& name) {
             const auto it = p.attributes.find(name);
             return it == p.attributes.end() ? -1.0 : double(it->second);
         };
-        std::vector<double> key = {
-            accessor("POSITION"),
-            accessor("NORMAL"),
-            double(p.indices),
-            double(p.mode),
-            double(p.morph_targets),
-            uv.textured ? accessor(fmt::format("TEXCOORD_{}", uv.tex_coord)) : -2.0};
-        if (uv.transformed)
-            for (int c = 0; c < 3; ++c)
-                for (int r = 0; r < 3; ++r) key.push_back(uv.transform[c][r]);
+        std::vector<double> key = {accessor("POSITION"),
+                                   accessor("NORMAL"),
+                                   double(p.indices),
+                                   double(p.mode),
+                                   double(p.morph_targets),
+                                   needs.uv_field[0].empty() ? -2.0 : accessor("TEXCOORD_0"),
+                                   needs.uv_field[1].empty() ? -2.0 : accessor("TEXCOORD_1")};
+        if (needs.normal_slot != NO_TEXTURE) {
+            const TextureSlot& n = s_.texture_slots[size_t(needs.normal_slot)];
+            key.insert(key.end(), {accessor("TANGENT"), double(n.sampling & SLOT_UV1),
+                                   n.transform_s.x, n.transform_s.y, n.transform_s.z,
+                                   n.transform_t.x, n.transform_t.y, n.transform_t.z});
+        }
         auto it = mesh_of_geometry_.find(key);
         if (it != mesh_of_geometry_.end()) return it->second;
         const uint32_t m = convert_primitive(mi, k);
@@ -257,6 +211,19 @@ class Builder {
 
     uint32_t material_of(const GltfPrimitive& p) {
         return p.material != GLTF_NONE ? uint32_t(p.material) : default_material();
+    }
+
+    // TEXCOORD_n of primitive p, which `reader` (a textureInfo's field) reads, as given.
+    std::vector<vec2> texcoords(const GltfPrimitive& p, const std::string& field, uint32_t n,
+                                const std::string& reader, uint32_t vertices) {
+        const std::string name = fmt::format("TEXCOORD_{}", n);
+        if (!p.attributes.count(name))
+            input_error("{}: {}.attributes: has no {}, which {} reads", d_.path, field, name,
+                        reader);
+        const std::vector<double> t = attribute(p, field, name, 2, vertices);
+        std::vector<vec2> uvs(vertices);
+        for (uint32_t v = 0; v < vertices; ++v) uvs[v] = vec2(float(t[2 * v]), float(t[2 * v + 1]));
+        return uvs;
     }
 
     uint32_t convert_primitive(uint32_t mi, uint32_t k) {
@@ -272,11 +239,13 @@ class Builder {
             return NO_INDEX;
         }
         if (p.morph_targets) note(fmt::format("{}: morph targets are not applied", field));
-        const UvUse& uv = uv_of_material_[material_of(p)];
-        const std::string texcoord = fmt::format("TEXCOORD_{}", uv.tex_coord);
+        // Attributes twinpath never reads (colours, joints, weights, custom ones); the uv sets
+        // and tangents are read where a material's slots need them.
         for (const auto& [name, accessor] : p.attributes)
-            if (name != "POSITION" && name != "NORMAL" && !(uv.textured && name == texcoord))
+            if (name != "POSITION" && name != "NORMAL" && name != "TANGENT" &&
+                name.rfind("TEXCOORD_", 0) != 0)
                 dropped_attributes_.insert(clip(name));
+        const SlotNeeds& needs = needs_of_material_[material_of(p)];
 
         Mesh m;
         m.name = gm.primitives.size() == 1
@@ -287,35 +256,47 @@ class Builder {
         m.positions.resize(nv);
         for (uint32_t v = 0; v < nv; ++v)
             m.positions[v] = glm::dvec3(pos[3 * v], pos[3 * v + 1], pos[3 * v + 2]);
-        if (p.attributes.count("NORMAL")) {
+        const bool has_normals = p.attributes.count("NORMAL") != 0;
+        if (has_normals) {
             const std::vector<double> n = attribute(p, field, "NORMAL", 3, nv);
             m.normals.resize(nv);
             for (uint32_t v = 0; v < nv; ++v)
                 m.normals[v] = vec3(float(n[3 * v]), float(n[3 * v + 1]), float(n[3 * v + 2]));
         }
-        if (uv.textured) {
-            if (!p.attributes.count(texcoord))
-                input_error("{}: {}.attributes: has no {}, which {} reads", d_.path, field,
-                            texcoord, uv.field);
-            const std::vector<double> t = attribute(p, field, texcoord, 2, nv);
-            m.uvs.resize(nv);
-            for (uint32_t v = 0; v < nv; ++v) {
-                glm::dvec3 st(t[2 * v], t[2 * v + 1], 1.0);
-                if (uv.transformed) st = uv.transform * st;
-                // glTF's (0, 0) is the image's top-left corner, twinpath's uv (OBJ's) the
-                // bottom-left (shared/texture.h, uv_to_image).
-                m.uvs[v] = vec2(float(st.x), float(1.0 - st.y));
-            }
+        if (!needs.uv_field[0].empty()) m.uvs = texcoords(p, field, 0, needs.uv_field[0], nv);
+        if (!needs.uv_field[1].empty()) m.uvs1 = texcoords(p, field, 1, needs.uv_field[1], nv);
+        // Tangents only with the normals they were made for (section 3.7.2.1: without NORMAL,
+        // flat normals, and the tangents are ignored).
+        if (needs.normal_slot != NO_TEXTURE && has_normals && p.attributes.count("TANGENT")) {
+            const std::vector<double> t = attribute(p, field, "TANGENT", 4, nv);
+            m.tangents.resize(nv);
+            for (uint32_t v = 0; v < nv; ++v)
+                m.tangents[v] = vec4(float(t[4 * v]), float(t[4 * v + 1]), float(t[4 * v + 2]),
+                                     float(t[4 * v + 3]));
         }
         m.triangles = triangles(p, field, nv);
         drop_unused_vertices(m);
-        finalize_mesh(m, fmt::format("{}: {}", d_.path, field), s_.skipped_triangles);
+        const std::string where = fmt::format("{}: {}", d_.path, field);
+        finalize_mesh(m, where, s_.skipped_triangles);
+        check_finite(m.uvs1, where, "TEXCOORD_1");
+        check_finite(m.tangents, where, "TANGENT");
         if (m.triangles.empty()) {
             note(fmt::format("{}: no triangle with an area, not rendered", field));
             return NO_INDEX;
         }
+        if (needs.normal_slot != NO_TEXTURE)
+            add_tangent_frame(m, s_.texture_slots[size_t(needs.normal_slot)]);
         s_.meshes.push_back(std::move(m));
         return uint32_t(s_.meshes.size() - 1);
+    }
+
+    template <typename V>
+    static void check_finite(const std::vector<V>& values, const std::string& where,
+                             const char* attribute) {
+        for (size_t i = 0; i < values.size(); ++i)
+            for (int c = 0; c < V::length(); ++c)
+                if (!std::isfinite(values[i][c]))
+                    input_error("{}.attributes.{}: element {} is not finite", where, attribute, i);
     }
 
     // ---- the node hierarchy ------------------------------------------------------------------
@@ -395,35 +376,39 @@ class Builder {
         }
     }
 
+    // The unit direction `world` maps the node's -Z to, along which directional and spot
+    // lights shine (KHR_lights_punctual, "Directional", "Spot").
+    glm::dvec3 light_axis(uint32_t node, const glm::dmat4& world, const std::string& field) {
+        const glm::dvec3 axis = glm::dvec3(world * glm::dvec4(0.0, 0.0, -1.0, 0.0));
+        const double len = glm::length(axis);
+        if (!(len > 0.0) || !std::isfinite(len))
+            input_error("{}: nodes[{}]: the transform of {} has no -Z direction", d_.path, node,
+                        field);
+        return axis / len;
+    }
+
     void add_light(uint32_t node, const glm::dmat4& world) {
         const uint32_t li = uint32_t(d_.nodes[node].light);
         const GltfLight& l = d_.lights[li];
         const std::string field = fmt::format("extensions.KHR_lights_punctual.lights[{}]", li);
-        if (l.type == "spot")
-            input_error("{}: nodes[{}] places {}{}, a spot light: twinpath renders point and "
-                        "directional lights, not spot lights",
-                        d_.path, node, field, l.name.empty() ? "" : " ('" + l.name + "')");
         if (l.has_range)
-            note(fmt::format("{}.range: the light falls off with the inverse square, without a "
-                             "range",
-                             field));
+            ignored.insert(fmt::format("{}.range: ignored (the light falls off with the inverse "
+                                       "square at every distance, as the extension asks within "
+                                       "the range)",
+                                       field));
         LightDesc desc;
-        // Candela (point) and lux (directional) are read as twinpath's W/sr and W/m^2, as
-        // emissive cd/m^2 is read as radiance: the ratios between the asset's lights hold.
-        desc.value = l.color * l.intensity;
-        if (l.type == "point") {
-            desc.type = LIGHT_POINT;
-            desc.position = glm::dvec3(world[3]);
-        } else {
-            // The light shines along the node's -Z (KHR_lights_punctual, "Directional").
-            const glm::dvec3 travel = glm::dvec3(world * glm::dvec4(0.0, 0.0, -1.0, 0.0));
-            const double len = glm::length(travel);
-            if (!(len > 0.0) || !std::isfinite(len))
-                input_error("{}: nodes[{}]: the transform of directional light {} has no -Z "
-                            "direction",
-                            d_.path, node, field);
+        desc.value = gltf_light_value(l.color, l.intensity);
+        if (l.type == "directional") {
             desc.type = LIGHT_DIRECTIONAL;
-            desc.direction = vec3(-travel / len);
+            desc.direction = vec3(-light_axis(node, world, field)); // towards the light
+        } else {
+            desc.type = l.type == "spot" ? LIGHT_SPOT : LIGHT_POINT;
+            desc.position = glm::dvec3(world[3]);
+            if (desc.type == LIGHT_SPOT) {
+                desc.direction = vec3(light_axis(node, world, field));
+                desc.inner_cone = l.inner_cone;
+                desc.outer_cone = l.outer_cone;
+            }
         }
         s_.lights.push_back(desc);
     }
@@ -488,9 +473,8 @@ class Builder {
     const GltfResources& res_;
     const GltfOptions& options_;
     Scene& s_;
-    std::map<uint32_t, Texture> decoded_;      // image -> decoded texels
-    std::map<uint32_t, int> texture_of_image_; // image -> scene texture
-    std::vector<UvUse> uv_of_material_;        // per scene material
+    GltfTextures textures_{d_, res_, s_};
+    std::vector<SlotNeeds> needs_of_material_; // per scene material
     uint32_t default_material_ = NO_INDEX;
     std::map<std::vector<double>, uint32_t> mesh_of_geometry_;        // primitive_mesh()
     std::map<uint32_t, std::pair<uint32_t, glm::dmat4>> camera_node_; // camera -> first node
@@ -499,6 +483,10 @@ class Builder {
 };
 
 } // namespace
+
+vec3 gltf_light_value(vec3 color, double intensity) {
+    return vec3(glm::dvec3(color) * (intensity / kGltfLumensPerWatt));
+}
 
 Scene load_gltf_scene(const std::string& path, const GltfOptions& options,
                       std::vector<std::string>& warnings) {
@@ -516,6 +504,7 @@ Scene load_gltf_scene(const std::string& path, const GltfOptions& options,
     b.build();
     if (scene.objects.empty()) input_error("{}: the scene has no triangles to render", path);
     scene.dropped.assign(b.notes.begin(), b.notes.end());
+    scene.ignored.assign(b.ignored.begin(), b.ignored.end());
     size_t material_notes = 0;
     for (const auto& m : scene.material_dropped) material_notes += m.size();
     if (!scene.dropped.empty() || material_notes > 0)

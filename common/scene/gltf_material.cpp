@@ -1,6 +1,7 @@
 #include "scene/gltf_material.h"
 
 #include "scene/scene.h"
+#include "shared/math.h"
 
 #include <fmt/format.h>
 
@@ -8,70 +9,69 @@
 #include <cmath>
 
 namespace tp {
+namespace {
 
-float gltf_phong_exponent(float roughness) {
-    const double r2 = double(roughness) * double(roughness);
-    const double ns = 0.5 / (r2 * r2) - 0.5; // +inf at r = 0
-    return float(std::min(ns, double(kMaxGltfPhongExponent)));
+// Why a path tracer has no use for what read_gltf_document lists as ignored.
+std::string ignored_reason(const std::string& property) {
+    if (property == "occlusionTexture")
+        return "occlusionTexture: ignored by a path tracer (it computes occlusion)";
+    if (property == "KHR_materials_volume.thicknessTexture")
+        return "KHR_materials_volume.thicknessTexture: ignored (a ray tracer measures thickness)";
+    return property + ": ignored";
 }
 
-GltfMaterialMapping map_gltf_material(const GltfMaterial& m, const vec3& emissive_texture_mean) {
+} // namespace
+
+GltfMaterialMapping map_gltf_material(const GltfMaterial& m) {
     GltfMaterialMapping out;
     Material& mat = out.material;
-    mat = default_material();
-    std::vector<std::string>& dropped = out.dropped;
-    // Emission: glTF's emissive (cd/m^2) times KHR_materials_emissive_strength, read as
-    // radiance in twinpath's units. twinpath has no emission texture: its mean keeps the power.
-    mat.ke = m.emissive * m.emissive_strength * emissive_texture_mean;
-    if (m.emissive_texture.texture != GLTF_NONE)
-        dropped.push_back(fmt::format("emissiveTexture: emission uses its mean ({:.3g}, {:.3g}, "
-                                      "{:.3g}) over the whole surface",
-                                      emissive_texture_mean.x, emissive_texture_mean.y,
-                                      emissive_texture_mean.z));
-    const bool textured = m.base_color_texture.texture != GLTF_NONE;
-    if (m.transmission > 0.0f) {
-        // KHR_materials_transmission: a thin or solid dielectric tinted by the base colour;
-        // twinpath's dielectric is smooth and fully transmissive.
-        mat.type = MATERIAL_DIELECTRIC;
-        mat.ior = m.ior;
-        mat.tf = m.base_color;
-        if (m.transmission < 1.0f)
-            dropped.push_back(fmt::format("transmissionFactor {}: rendered as 1", m.transmission));
-        if (m.roughness > 0.0f)
-            dropped.push_back(
-                fmt::format("roughnessFactor {}: the dielectric is smooth", m.roughness));
-        if (m.metallic > 0.0f)
-            dropped.push_back(
-                fmt::format("metallicFactor {}: the dielectric is not metallic", m.metallic));
-        if (textured)
-            dropped.push_back("baseColorTexture: the dielectric's tint is baseColorFactor");
-    } else if (m.metallic == 1.0f && m.roughness == 0.0f) {
-        mat.type = MATERIAL_MIRROR;
-        mat.ks = m.base_color;
-        if (textured) dropped.push_back("baseColorTexture: the mirror's tint is baseColorFactor");
-    } else {
-        // glTF 2.0 Appendix B: the dielectric part is a specular layer of reflectance F0 at
-        // normal incidence (((ior - 1) / (ior + 1))^2 = 0.04 at ior 1.5, scaled by
-        // KHR_materials_specular) over a diffuse base of weight 1 - F0; the metallic part
-        // reflects the base colour specularly. Phong has no Fresnel term: F0 stands for the
-        // specular reflectance at every angle. Kd + Ks = (1 - m)((1 - F0) b + F0) + m b <= 1.
-        const double f = (double(m.ior) - 1.0) / (double(m.ior) + 1.0);
-        const vec3 f0 = glm::min(vec3(float(f * f) * m.specular) * m.specular_color, vec3(1.0f));
-        const float metal = m.metallic;
-        mat.type = MATERIAL_PHONG;
-        mat.kd = (1.0f - metal) * (vec3(1.0f) - f0) * m.base_color;
-        mat.ks = (1.0f - metal) * f0 + metal * m.base_color;
-        mat.ns = gltf_phong_exponent(m.roughness);
-        out.uses_base_color_texture = textured;
-        if (textured && metal > 0.0f)
-            dropped.push_back(fmt::format("baseColorTexture: tints the diffuse part only, not "
-                                          "the metallic specular (metallicFactor {})",
-                                          metal));
-    }
-    if (m.alpha_mode != "OPAQUE")
-        dropped.push_back(fmt::format("alphaMode {}: rendered opaque", m.alpha_mode));
-    for (const std::string& u : m.unused) dropped.push_back(u);
+    mat = default_pbr_material();
+    mat.kd = m.base_color;
+    mat.alpha = m.base_alpha;
+    mat.metallic = m.metallic;
+    mat.roughness = m.roughness;
+    // Emission: glTF's emissive times KHR_materials_emissive_strength is radiance (W m^-2 sr^-1),
+    // as Blender reads it (emission strength); the emissive texture is a slot that multiplies it.
+    mat.ke = m.emissive * m.emissive_strength;
+    mat.ior = m.ior == 0.0f ? kGltfInfiniteIor : m.ior;
+    mat.specular = m.specular;
+    mat.ks = m.specular_color;
+    mat.transmission = m.transmission;
+    // KHR_materials_volume: thickness 0 is a thin-walled surface, any other a volume boundary
+    // (ray tracers measure the thickness along the ray, the factor only says there is one).
+    if (m.thickness > 0.0f) mat.flags |= MATERIAL_FLAG_VOLUME;
+    mat.tf = m.attenuation_color;
+    mat.attenuation_distance =
+        std::isinf(m.attenuation_distance) ? FLOAT_MAX : m.attenuation_distance;
+    mat.normal_scale = m.normal_scale;
+    mat.alpha_mode = m.alpha_mode == "MASK"    ? ALPHA_MASK
+                     : m.alpha_mode == "BLEND" ? ALPHA_BLEND
+                                               : ALPHA_OPAQUE;
+    // A cutoff above 1 masks everything out (alpha never exceeds 1): so does alpha 0 at cutoff
+    // 1, which stays in the range the engines read.
+    mat.alpha_cutoff = std::min(m.alpha_cutoff, 1.0f);
+    if (mat.alpha_mode == ALPHA_MASK && m.alpha_cutoff > 1.0f) mat.alpha = 0.0f;
+    for (const std::string& p : m.ignored) out.ignored.push_back(ignored_reason(p));
+    for (const std::string& u : m.unused)
+        out.dropped.push_back(u + ": an extension twinpath does not read");
     return out;
+}
+
+std::vector<GltfTextureUse> gltf_material_textures(const GltfMaterial& m) {
+    const GltfTextureUse all[] = {
+        {&m.base_color_texture, &Material::kd_texture, true, "baseColorTexture"},
+        {&m.metallic_roughness_texture, &Material::metallic_roughness_texture, false,
+         "metallicRoughnessTexture"},
+        {&m.normal_texture, &Material::normal_texture, false, "normalTexture"},
+        {&m.emissive_texture, &Material::emissive_texture, true, "emissiveTexture"},
+        {&m.transmission_texture, &Material::transmission_texture, false, "transmissionTexture"},
+        {&m.specular_texture, &Material::specular_texture, false, "specularTexture"},
+        {&m.specular_color_texture, &Material::specular_color_texture, true,
+         "specularColorTexture"}};
+    std::vector<GltfTextureUse> used;
+    for (const GltfTextureUse& u : all)
+        if (u.ref->texture != GLTF_NONE) used.push_back(u);
+    return used;
 }
 
 } // namespace tp

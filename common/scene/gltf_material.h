@@ -1,6 +1,8 @@
-// The rule that maps a glTF 2.0 material (metallic-roughness and the extensions of
-// gltf_document.h) onto twinpath's materials; docs/scene-format.md ("glTF materials") states
-// it as a table. Pure: no I/O.
+// A glTF 2.0 material as twinpath's MATERIAL_PBR: the engines render glTF's own BSDF
+// (shared/pbr.h, glTF 2.0 Appendix B with KHR_materials_ior, _specular, _transmission and
+// _volume), so the mapping copies the factors one for one; docs/scene-format.md ("glTF
+// materials") states it as a table. Pure: no I/O. The texture slots are the loader's
+// (gltf_loader.cpp): which textureInfo feeds which Material field is gltf_material_textures.
 #pragma once
 
 #include "scene/gltf_document.h"
@@ -11,27 +13,30 @@
 
 namespace tp {
 
-// The largest Phong exponent a glTF roughness maps to (roughness below ~0.027).
-constexpr float kMaxGltfPhongExponent = 1e6f;
-
-// The modified-Phong exponent that stands for glTF's roughness r. glTF's microfacet
-// distribution has width alpha = r^2 (glTF 2.0, Appendix B.3). Walter et al. 2007, section
-// 5.2, match a Phong (half-vector) distribution of exponent a_p = 2 / alpha^2 - 2 to a
-// microfacet distribution of width alpha. twinpath's lobe is Lafortune's, around the mirror
-// direction: near the peak the angle to the mirror direction is twice the half-vector's angle,
-// so cos^n(2 theta) ~ exp(-2 n theta^2) matches cos^a_p(theta) ~ exp(-a_p theta^2 / 2) for
-// n = a_p / 4. Hence Ns = (2 / r^4 - 2) / 4 = 1 / (2 r^4) - 1/2: 0 at r = 1, 7.5 at r = 0.5,
-// capped at kMaxGltfPhongExponent.
-float gltf_phong_exponent(float roughness);
+// KHR_materials_ior's ior 0 (its specular-glossiness mode) stands for an infinite index, whose
+// Fresnel term is 1 at every angle; rendered with this one, whose f0 is within 4e-6 of 1.
+constexpr float kGltfInfiniteIor = 1e6f;
 
 struct GltfMaterialMapping {
-    Material material{};                  // kd_texture NO_TEXTURE: the loader sets it
-    bool uses_base_color_texture = false; // kd is multiplied by the base colour texture
-    std::vector<std::string> dropped;     // what twinpath does not render, one entry each
+    Material material{};              // every texture field NO_TEXTURE: the loader sets them
+    std::vector<std::string> ignored; // what a path tracer has no use for, with the reason
+    std::vector<std::string> dropped; // what twinpath does not render, one entry each
 };
 
-// `emissive_texture_mean`: the mean linear texel of the emissive texture, (1, 1, 1) without
-// one. The material satisfies validate_material (scene.h) for every valid glTF input.
-GltfMaterialMapping map_gltf_material(const GltfMaterial& m, const vec3& emissive_texture_mean);
+// The material satisfies validate_material (scene.h) for every input read_gltf_document accepts.
+GltfMaterialMapping map_gltf_material(const GltfMaterial& m);
+
+// One texture a glTF material reads: its textureInfo, the Material field whose slot it becomes,
+// and whether its texels are sRGB-encoded colour (glTF 2.0, section 3.9: base colour, emissive,
+// and KHR_materials_specular's colour) or linear data.
+struct GltfTextureUse {
+    const GltfTextureRef* ref;
+    int Material::*field;
+    bool srgb;
+    const char* name; // "baseColorTexture", for twinpath info
+};
+
+// The textures `m` gives (those with a texture index), in a fixed order.
+std::vector<GltfTextureUse> gltf_material_textures(const GltfMaterial& m);
 
 } // namespace tp

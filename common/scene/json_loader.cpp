@@ -2,8 +2,10 @@
 
 #include "image/texture_io.h"
 #include "scene/generators.h"
+#include "scene/json_material.h"
 #include "scene/json_reader.h"
 #include "scene/obj_loader.h"
+#include "scene/tangents.h"
 #include "shared/math.h"
 #include "util/error.h"
 
@@ -197,39 +199,14 @@ Texture read_texture(const Reader& r, const json& j, const std::string& field) {
            fmt::format("unknown generator '{}' (expected checker or marble)", gen));
 }
 
-Material read_material(const Reader& r, const json& j, const std::string& field,
-                       const std::map<std::string, uint32_t>& textures) {
-    r.keys(j, field, {"type", "Kd", "Ks", "Ns", "Ke", "Ni", "Tf", "map_Kd"});
-    Material m = default_material();
-    const std::string type = j.contains("type") ? r.string(j["type"], field + ".type") : "phong";
-    if (type == "phong")
-        m.type = MATERIAL_PHONG;
-    else if (type == "mirror")
-        m.type = MATERIAL_MIRROR;
-    else if (type == "dielectric")
-        m.type = MATERIAL_DIELECTRIC;
-    else
-        r.fail(
-            field + ".type",
-            fmt::format("unknown material type '{}' (expected phong, mirror, dielectric)", type));
-    if (j.contains("Kd")) m.kd = r.color(j["Kd"], field + ".Kd");
-    if (j.contains("Ks")) m.ks = r.color(j["Ks"], field + ".Ks");
-    if (j.contains("Ke")) m.ke = r.color(j["Ke"], field + ".Ke");
-    if (j.contains("Tf")) m.tf = r.color(j["Tf"], field + ".Tf");
-    if (j.contains("Ns")) m.ns = r.number(j["Ns"], field + ".Ns", 0.0f, 1e7f);
-    if (j.contains("Ni")) m.ior = r.number(j["Ni"], field + ".Ni", 1e-3f, 100.0f);
-    if (j.contains("map_Kd")) {
-        const std::string name = r.string(j["map_Kd"], field + ".map_Kd");
-        auto it = textures.find(name);
-        if (it == textures.end())
-            r.fail(field + ".map_Kd", fmt::format("no texture named '{}'", name));
-        m.kd_texture = int(it->second);
+// What the normal maps of the objects' materials need of their meshes: normals and tangents
+// (tangents.h), made once per mesh (the slots all read the first uv set through OBJ's map).
+void add_normal_map_frames(Scene& scene) {
+    for (const Object& o : scene.objects) {
+        const Material& m = scene.materials[o.material];
+        if (m.type == MATERIAL_PBR && m.normal_texture != NO_TEXTURE)
+            add_tangent_frame(scene.meshes[o.mesh], scene.texture_slots[size_t(m.normal_texture)]);
     }
-    if (m.type == MATERIAL_MIRROR && !j.contains("Ks")) m.ks = vec3(1.0f);
-    if (m.type == MATERIAL_PHONG && !j.contains("Kd") && !j.contains("Ks") && !j.contains("Ke"))
-        r.fail(field, "a phong material needs at least one of Kd, Ks, Ke");
-    validate_material(m, fmt::format("{}: {}", r.file(), field));
-    return m;
 }
 
 } // namespace
@@ -286,7 +263,8 @@ Scene load_json_scene(const std::string& path, std::vector<std::string>& warning
         if (!root["materials"].is_object())
             r.fail("materials", "expected an object of named materials");
         for (const auto& [name, j] : root["materials"].items()) {
-            scene.materials.push_back(read_material(r, j, "materials." + name, textures));
+            scene.materials.push_back(
+                read_json_material(r, j, "materials." + name, textures, scene));
             scene.material_names.push_back(name);
             materials[name] = uint32_t(scene.materials.size() - 1);
         }
@@ -336,6 +314,8 @@ Scene load_json_scene(const std::string& path, std::vector<std::string>& warning
             scene.objects.push_back(obj);
         }
     }
+
+    add_normal_map_frames(scene);
 
     if (root.contains("lights")) {
         const json& lights = root["lights"];

@@ -2,6 +2,7 @@
 
 #include "image/texture_io.h"
 #include "scene/text_parse.h"
+#include "scene/texture_slots.h"
 #include "shared/math.h"
 #include "util/error.h"
 
@@ -100,7 +101,8 @@ void load_mtl(const fs::path& path, Scene& scene, std::map<std::string, uint32_t
             const fs::path file = path.parent_path() / map_file(in, tok);
             if (!fs::exists(file)) in.fail("map_Kd texture '{}' does not exist", file.string());
             try {
-                cur->kd_texture = int(add_texture(scene, file));
+                cur->kd_texture =
+                    add_texture_slot(scene, obj_texture_slot(add_texture(scene, file), true));
             } catch (const InputError& e) {
                 in.fail("map_Kd: {}", e.what()); // the texture's own error, at this line
             }

@@ -91,6 +91,11 @@ struct Scene {
     // per material (parallel to `materials`, or empty) and for the scene as a whole.
     std::vector<std::vector<std::string>> material_dropped;
     std::vector<std::string> dropped;
+    // What it gives that a path tracer has no use for (an occlusion texture, a sampler's
+    // minification filter, a light's range), each with the reason: `twinpath info` lists them
+    // as ignored. Parallel to `materials` or empty, as above.
+    std::vector<std::vector<std::string>> material_ignored;
+    std::vector<std::string> ignored;
 };
 
 // A material with every field at its neutral value: black Phong, ior 1.5, tf 1, opaque, no
