@@ -14,6 +14,7 @@
 #include "render/stats.h"
 #include "scene/flatten.h"
 #include "shared/camera.h"
+#include "shared/alpha.h"
 #include "shared/features.h"
 #include "shared/lights.h"
 #include "shared/path.h"
@@ -57,8 +58,10 @@ class CpuEngine {
               std::vector<PathVertex>* log = nullptr)
         : params(state.params), instances(state.scene.instances), meshes(state.scene.meshes),
           triangles(state.scene.triangles), positions(state.scene.positions),
-          normals(state.scene.normals), uvs(state.scene.uvs), materials(state.scene.materials),
-          textures(state.scene.textures), texels(state.scene.texels), lights(state.scene.lights),
+          normals(state.scene.normals), uvs(state.scene.uvs), uvs1(state.scene.uvs1),
+          tangents(state.scene.tangents), materials(state.scene.materials),
+          texture_slots(state.scene.texture_slots), textures(state.scene.textures),
+          texel_words(state.scene.texel_words), lights(state.scene.lights),
           light_table(state.scene.light_table),
           env_table(state.scene.env_table), scene_features{features}, state_(state), accel_(accel),
           log_(log) {}
@@ -85,19 +88,26 @@ class CpuEngine {
     const std::vector<vec3>& positions;
     const std::vector<vec3>& normals;
     const std::vector<vec2>& uvs;
+    const std::vector<vec2>& uvs1;
+    const std::vector<vec4>& tangents;
     const std::vector<Material>& materials;
+    const std::vector<TextureSlot>& texture_slots;
     const std::vector<TextureInfo>& textures;
-    const std::vector<vec3>& texels;
+    const std::vector<uint32_t>& texel_words;
     const std::vector<Light>& lights;
     const std::vector<AliasEntry>& light_table;
     const std::vector<AliasEntry>& env_table;
     const FeatureMask scene_features;
 
     bool trace_closest(const Ray& ray, Hit& hit) const {
-        hit = accel_.intersect(ray);
+        const CoverageTest c{&CpuEngine::alpha_covers_thunk, this, ray};
+        hit = accel_.intersect(ray, feature_on(scene_features, FEATURE_ALPHA) ? &c : nullptr);
         return hit.found;
     }
-    bool trace_occluded(const Ray& ray) const { return accel_.occluded(ray); }
+    bool trace_occluded(const Ray& ray) const {
+        const CoverageTest c{&CpuEngine::alpha_covers_thunk, this, ray};
+        return accel_.occluded(ray, feature_on(scene_features, FEATURE_ALPHA) ? &c : nullptr);
+    }
     InstanceErrorTerms scene_error_terms(uint32_t instance) const {
         return state_.error_terms[instance];
     }
@@ -129,6 +139,13 @@ class CpuEngine {
 #include "shared/scene_access.h"
 
   private:
+    // scene_alpha_covers (shared/scene_access.h) for Embree's filter; it reads the scene only.
+    static bool alpha_covers_thunk(const void* engine, uint32_t instance, uint32_t primitive,
+                                   vec2 bary, const Ray& ray) {
+        return const_cast<CpuEngine*>(static_cast<const CpuEngine*>(engine))
+            ->scene_alpha_covers(instance, primitive, bary, ray);
+    }
+
     const CpuSceneState& state_;
     const EmbreeAccel& accel_;
     std::vector<PathVertex>* log_;

@@ -15,7 +15,7 @@ vec3 CpuDebugViews::radiance(uint32_t x, uint32_t y, uint32_t sample_index) cons
     const Ray ray = camera_ray(P.camera, key, x, y);
     if (integrator_ == INTEGRATOR_COST) {
         const auto t0 = std::chrono::steady_clock::now();
-        const Hit hit = accel_.intersect(ray);
+        const Hit hit = accel_.intersect(ray, nullptr);
         const auto t1 = std::chrono::steady_clock::now();
         (void)hit;
         return vec3(float(std::chrono::duration<double, std::nano>(t1 - t0).count()));

@@ -145,9 +145,10 @@ EmbreeAccel::~EmbreeAccel() {
     if (device_) rtcReleaseDevice(device_);
 }
 
-Hit EmbreeAccel::intersect(const Ray& ray) const {
+Hit EmbreeAccel::intersect(const Ray& ray, const CoverageTest* coverage) const {
     ExactQuery query;
     rtcInitIntersectContext(&query.context);
+    query.coverage = coverage;
     RTCRayHit rh;
     rh.ray.org_x = ray.origin.x;
     rh.ray.org_y = ray.origin.y;
@@ -175,9 +176,10 @@ Hit EmbreeAccel::intersect(const Ray& ray) const {
     return h;
 }
 
-bool EmbreeAccel::occluded(const Ray& ray) const {
+bool EmbreeAccel::occluded(const Ray& ray, const CoverageTest* coverage) const {
     ExactQuery query;
     rtcInitIntersectContext(&query.context);
+    query.coverage = coverage;
     RTCRay r;
     r.org_x = ray.origin.x;
     r.org_y = ray.origin.y;

@@ -33,8 +33,9 @@ class EmbreeAccel {
     EmbreeAccel(const EmbreeAccel&) = delete;
     EmbreeAccel& operator=(const EmbreeAccel&) = delete;
 
-    Hit intersect(const Ray& ray) const;
-    bool occluded(const Ray& ray) const;
+    // `coverage`: the alpha test every candidate must pass (exact_triangles.h); null: opaque.
+    Hit intersect(const Ray& ray, const CoverageTest* coverage) const;
+    bool occluded(const Ray& ray, const CoverageTest* coverage) const;
 
     // Bytes Embree holds for the acceleration structures (its memory monitor).
     uint64_t memory_bytes() const { return uint64_t(std::max<int64_t>(bytes_.load(), 0)); }

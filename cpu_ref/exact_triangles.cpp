@@ -45,6 +45,16 @@ bool keep_candidate(const RTCFilterFunctionNArguments* args, unsigned i, bool re
             return false;
         tested = true;
     }
+    if (query->coverage) {
+        const uint32_t prim = RTCHitN_primID(hit, n, i);
+        const unsigned inst = RTCHitN_instID(hit, n, i, 0);
+        // A flattened mesh's triangles carry their instance index as geometry ID (embree_accel).
+        const uint32_t instance = inst != RTC_INVALID_GEOMETRY_ID ? inst : RTCHitN_geomID(hit, n, i);
+        const vec3 h = tested ? tuv : exact_margin_hit(mesh, prim, org, dir);
+        if (!query->coverage->covers(query->coverage->engine, instance, prim, vec2(h.y, h.z),
+                                     query->coverage->ray))
+            return false;
+    }
     if (record) {
         query->mesh = &mesh;
         query->org = org;
@@ -114,20 +124,24 @@ void exact_occluded_filter(const RTCFilterFunctionNArguments* args) {
 
 vec3 exact_hit(const ExactQuery& query, uint32_t primitive) {
     if (query.tested) return query.tuv;
+    return exact_margin_hit(*query.mesh, primitive, query.org, query.dir);
+}
+
+vec3 exact_margin_hit(const ExactMesh& mesh, uint32_t primitive, vec3 org, vec3 dir) {
     // A hit the margin accepted lies more than delta inside the triangle, so no edge decision is
     // left: the distance from the plane as intersect_triangle takes it (the same expression) and
     // the barycentrics of Moeller & Trumbore (1997), equal to the watertight test's to
     // rounding. Two independent divisions instead of intersect_triangle's chain of the
     // ray's shear and its own: this runs once per hit (docs/stress.md, "Embree at vertices").
-    const uvec3 t = query.mesh->triangles[primitive];
-    const std::vector<vec3>& v = query.mesh->vertices;
+    const uvec3 t = mesh.triangles[primitive];
+    const std::vector<vec3>& v = mesh.vertices;
     const vec3 e1 = v[t.y] - v[t.x], e2 = v[t.z] - v[t.x];
-    const vec3 a = v[t.x] - query.org;
+    const vec3 a = v[t.x] - org;
     const vec3 n = triangle_plane_normal(v[t.x], v[t.y], v[t.z]);
-    const float distance = dot(a, n) / dot(query.dir, n);
-    const vec3 p = cross(query.dir, e2), q = cross(-a, e1);
+    const float distance = dot(a, n) / dot(dir, n);
+    const vec3 p = cross(dir, e2), q = cross(-a, e1);
     const float inv_det = 1.0f / dot(e1, p);
-    return vec3(distance, dot(-a, p) * inv_det, dot(query.dir, q) * inv_det);
+    return vec3(distance, dot(-a, p) * inv_det, dot(dir, q) * inv_det);
 }
 
 } // namespace tp

@@ -17,6 +17,7 @@
 #pragma once
 
 #include "shared/intersect.h"
+#include "shared/path.h"
 
 #include <embree3/rtcore.h>
 
@@ -32,6 +33,16 @@ struct ExactMesh {
     float margin = 0.0f; // 2 delta times the longest grown edge (grow_triangles)
 };
 
+// Alpha coverage (shared/alpha.h), asked of every candidate the exact test keeps where a query
+// carries one: the engine's test with the world-space ray and the candidate's instance, triangle
+// and exact barycentrics.
+struct CoverageTest {
+    bool (*covers)(const void* engine, uint32_t instance, uint32_t primitive, vec2 bary,
+                   const Ray& ray);
+    const void* engine;
+    Ray ray; // in world space, as the engine traced it
+};
+
 // An Embree query context that the filters below fill in: the candidate they accepted last (the
 // nearest, since Embree offers only candidates nearer than the current hit), the ray as its
 // geometry saw it, and the exact test's result where they ran it.
@@ -41,6 +52,7 @@ struct ExactQuery {
     vec3 org{0.0f}, dir{0.0f};
     bool tested = false;
     vec3 tuv{0.0f};
+    const CoverageTest* coverage = nullptr; // none: every surface is opaque
 };
 
 // delta for rays whose origins and vertices lie within `extent` of the origin in every
@@ -69,5 +81,9 @@ void exact_occluded_filter(const RTCFilterFunctionNArguments* args);
 // The exact distance and barycentrics (weights of vertices 1 and 2) of the hit the query ended
 // with, triangle `primitive` of query.mesh.
 vec3 exact_hit(const ExactQuery& query, uint32_t primitive);
+
+// The same for a ray (org, dir) and triangle `primitive` of `mesh`, where the margin accepted the
+// hit (exact_hit's arithmetic).
+vec3 exact_margin_hit(const ExactMesh& mesh, uint32_t primitive, vec3 org, vec3 dir);
 
 } // namespace tp

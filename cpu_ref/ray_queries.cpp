@@ -8,13 +8,13 @@ ClosestHits closest_hits_cpu(const FlatScene& scene, const std::vector<Ray>& ray
     const EmbreeAccel embree(scene);
     ClosestHits out(rays.size());
     for (size_t i = 0; i < rays.size(); ++i) {
-        const Hit h = embree.intersect(rays[i]);
+        const Hit h = embree.intersect(rays[i], nullptr);
         out.found[i] = h.found;
         out.t[i] = h.t;
         out.instance[i] = h.instance;
         out.primitive[i] = h.primitive;
         out.bary[i] = h.bary;
-        out.occluded[i] = embree.occluded(rays[i]);
+        out.occluded[i] = embree.occluded(rays[i], nullptr);
     }
     return out;
 }

@@ -1,7 +1,7 @@
 // The scene and film buffers of descriptor set 0 (slots in interface.h), as the render shaders
 // see them. Every block uses the scalar layout, so the arrays are byte-for-byte the C++
 // vectors of FlatScene. The acceleration structure's bindings belong to the trace include
-// (trace_bvh.glsl: slots 13 and 14).
+// (trace_bvh.glsl: slots 16 and 17).
 #ifndef TP_SHADERS_BINDINGS_GLSL
 #define TP_SHADERS_BINDINGS_GLSL
 
@@ -44,7 +44,16 @@ layout(scalar, set = 0, binding = BINDING_TEXTURES) readonly buffer TextureBuffe
     TextureInfo textures[];
 };
 layout(scalar, set = 0, binding = BINDING_TEXELS) readonly buffer TexelBuffer {
-    vec3 texels[];
+    uint texel_words[];
+};
+layout(scalar, set = 0, binding = BINDING_TEXTURE_SLOTS) readonly buffer TextureSlotBuffer {
+    TextureSlot texture_slots[];
+};
+layout(scalar, set = 0, binding = BINDING_UVS1) readonly buffer Uv1Buffer {
+    vec2 uvs1[];
+};
+layout(scalar, set = 0, binding = BINDING_TANGENTS) readonly buffer TangentBuffer {
+    vec4 tangents[];
 };
 layout(scalar, set = 0, binding = BINDING_ENV_TABLE) readonly buffer EnvTableBuffer {
     AliasEntry env_table[];

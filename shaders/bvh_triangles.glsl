@@ -27,6 +27,9 @@ const float TRACE_OFFSET_SLACK = 1.0f;
 // Triangle lights' stored normals (shared/lights.h, light_normal).
 const bool SCENE_LIGHT_NORMAL_FROM_VERTICES = false;
 
+// The scene reads, after the hooks they take: the alpha test below reads materials.
+#include "scene_access.glsl"
+
 #ifdef TP_DEBUG_SHADER
 // The traversal cost the cost view shows (debug.glsl): nodes visited and triangles tested by
 // the trace calls since the view cleared them. Only in the debug variant.
@@ -37,31 +40,44 @@ uint g_trace_triangles = 0u;
 
 // Tests the triangle (v0, v1, v2) of plane normal n with the watertight test
 // (shared/intersect.h) against the ray in the space it is traversed in (origin org, wr from its
-// direction); a hit closer than hit.t replaces hit, naming `instance` and `primitive`.
-bool bvh_triangle_test(vec3 org, WatertightRay wr, vec3 v0, vec3 v1, vec3 v2, vec3 n,
-                       uint instance, uint primitive, inout TraceHit hit) {
+// direction): true, with its (t, u, v), where it is hit closer than tmax.
+bool bvh_triangle_candidate(vec3 org, WatertightRay wr, vec3 v0, vec3 v1, vec3 v2, vec3 n,
+                            float tmax, out vec3 tuv) {
 #ifdef TP_TRACE_COUNTS
     ++g_trace_triangles;
 #endif
-    vec3 tuv;
-    if (!intersect_triangle_normal(org, wr, v0, v1, v2, n, hit.t, tuv)) return false;
+    return intersect_triangle_normal(org, wr, v0, v1, v2, n, tmax, tuv);
+}
+
+// Whether a candidate's surface is there (alpha as coverage, shared/alpha.h): asked of the
+// world-space ray, so that both traversals and both engines ask the same question.
+bool bvh_covers(uint instance, uint primitive, vec2 bary, Ray ray) {
+    return !feature_on(scene_features, FEATURE_ALPHA) ||
+           scene_alpha_covers(instance, primitive, bary, ray);
+}
+
+void bvh_accept(vec3 tuv, uint instance, uint primitive, inout TraceHit hit) {
     hit.t = tuv.x;
     hit.instance = instance;
     hit.primitive = primitive;
     hit.bary = vec2(tuv.y, tuv.z);
-    return true;
 }
 
-// Tests BvhTriangle item i of the binary layout. With two levels the hit's instance is inst,
-// the one being traversed; with one level the item's own.
-bool bvh_triangle_hit(uint i, vec3 org, WatertightRay wr, bool two_level, uint inst,
+// Tests BvhTriangle item i of the binary layout; a hit closer than hit.t replaces hit. With two
+// levels the hit's instance is inst, the one being traversed; with one level the item's own.
+bool bvh_triangle_hit(uint i, vec3 org, WatertightRay wr, bool two_level, uint inst, Ray ray,
                       inout TraceHit hit) {
     vec4 a = bvh_triangle_words[4u * i];
     vec4 b = bvh_triangle_words[4u * i + 1u];
     vec4 c = bvh_triangle_words[4u * i + 2u];
     vec3 n = bvh_triangle_words[4u * i + 3u].xyz;
-    return bvh_triangle_test(org, wr, a.xyz, b.xyz, c.xyz, n,
-                             two_level ? inst : floatBitsToUint(b.w), floatBitsToUint(a.w), hit);
+    vec3 tuv;
+    if (!bvh_triangle_candidate(org, wr, a.xyz, b.xyz, c.xyz, n, hit.t, tuv)) return false;
+    uint instance = two_level ? inst : floatBitsToUint(b.w);
+    uint primitive = floatBitsToUint(a.w);
+    if (!bvh_covers(instance, primitive, vec2(tuv.y, tuv.z), ray)) return false;
+    bvh_accept(tuv, instance, primitive, hit);
+    return true;
 }
 
 #endif // TP_SHADERS_BVH_TRIANGLES_GLSL

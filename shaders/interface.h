@@ -2,7 +2,7 @@
 // the push constants of one batch, the per-pixel accumulator and the ray counters. Written in
 // the shared-header dialect (common/shared/lang.h) so that vulkan_rt/ and shaders/ read the
 // same numbers. Every binding is a storage buffer in descriptor set 0, except the pipeline
-// mode's TLAS (an acceleration-structure descriptor in slot 13, where compute mode has its BVH).
+// mode's TLAS (an acceleration-structure descriptor in slot 16, where compute mode has its BVH).
 #ifndef TP_SHADERS_INTERFACE_H
 #define TP_SHADERS_INTERFACE_H
 
@@ -26,18 +26,22 @@ const uint BINDING_UVS = 6u;         // vec2[], parallel to positions (dummy wit
 const uint BINDING_TRIANGLES = 7u;   // uvec3[], mesh-local vertex indices
 const uint BINDING_LIGHTS = 8u;      // Light[]
 const uint BINDING_LIGHT_TABLE = 9u; // AliasEntry[], light selection
-const uint BINDING_TEXTURES = 10u;   // TextureInfo[]
-const uint BINDING_TEXELS = 11u;     // vec3[]
+const uint BINDING_TEXTURES = 10u;   // TextureInfo[]: the images
+const uint BINDING_TEXELS = 11u;     // uint[]: their texel words (TextureInfo::format)
 const uint BINDING_ENV_TABLE = 12u;  // AliasEntry[], environment-map pixels
-const uint BINDING_BVH_NODES = 13u;  // BvhNode[] (compute mode)
-const uint BINDING_BVH_TRIS = 14u;   // BvhTriangle[] (compute mode)
-const uint BINDING_TLAS = 13u;       // top-level acceleration structure (pipeline mode; no 14)
-const uint BINDING_ACCUM = 15u;      // PixelAccum[width * height]
-const uint BINDING_COUNTERS = 16u;   // uint[COUNTER_WORDS]
-const uint BINDING_DEBUG = 17u;      // DebugHeader + PathVertex[] (debug variant only)
-const uint BINDING_AOV = 18u;        // PixelAov[width * height] (debug variant only)
-const uint BINDING_SAMPLES = 19u;    // vec4[]: one batch's sample estimates, by work item
-const uint BINDING_COUNT = 20u;
+const uint BINDING_UVS1 = 13u;       // vec2[], the second uv set (dummy without one)
+const uint BINDING_TANGENTS = 14u;   // vec4[], normal maps' tangents (dummy without normal maps)
+const uint BINDING_TEXTURE_SLOTS = 15u; // TextureSlot[]: how materials read the images
+const uint BINDING_SCENE_COUNT = 16u;   // the scene's slots: 0 .. 15
+const uint BINDING_BVH_NODES = 16u;  // BvhNode[] (compute mode)
+const uint BINDING_BVH_TRIS = 17u;   // BvhTriangle[] (compute mode)
+const uint BINDING_TLAS = 16u;       // top-level acceleration structure (pipeline mode; no 17)
+const uint BINDING_ACCUM = 18u;      // PixelAccum[width * height]
+const uint BINDING_COUNTERS = 19u;   // uint[COUNTER_WORDS]
+const uint BINDING_DEBUG = 20u;      // DebugHeader + PathVertex[] (debug variant only)
+const uint BINDING_AOV = 21u;        // PixelAov[width * height] (debug variant only)
+const uint BINDING_SAMPLES = 22u;    // vec4[]: one batch's sample estimates, by work item
+const uint BINDING_COUNT = 23u;
 
 // ---- specialization constants (shaders/features.glsl, shaders/render_items.glsl) -------------
 const uint SPEC_SCENE_FEATURES = 0u; // uint: the FEATURE_* mask the path loop is compiled for

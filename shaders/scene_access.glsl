@@ -6,7 +6,9 @@
 
 #include "bindings.glsl"
 #include "features.glsl"
+#include "shared/alpha.h"
 #include "shared/lights.h"
+#include "shared/path.h"
 #include "shared/surface.h"
 #include "shared/texture.h"
 #include "trace_hit.glsl"

@@ -115,7 +115,7 @@ bool bvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
                 uint first = c == 0u ? n.ref0 : n.ref1;
                 uint end = first + (c == 0u ? n.count0 : n.count1);
                 for (uint i = first; i < end; ++i) {
-                    if (!bvh_triangle_hit(i, org, wr, two_level, inst, hit)) continue;
+                    if (!bvh_triangle_hit(i, org, wr, two_level, inst, ray, hit)) continue;
                     found = true;
                     if (any_hit) return true;
                 }

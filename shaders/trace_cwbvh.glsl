@@ -95,16 +95,6 @@ uint cwbvh_child_hits(uvec4 w0, uvec4 w1, uvec4 w2, uvec4 w3, uvec4 w4, vec3 org
     return hits;
 }
 
-// Tests triangle record i (cwbvh.h). The hit names record i as its primitive and inst as its
-// instance until cwbvh_hit_ids replaces them with what the record stands for.
-bool cwbvh_triangle_hit(uint i, vec3 org, WatertightRay wr, uint inst, inout TraceHit hit) {
-    uint w = CWBVH_TRIANGLE_WORDS * i + 1u;
-    vec4 a = bvh_triangle_words[w];
-    vec4 b = bvh_triangle_words[w + 1u];
-    vec4 c = bvh_triangle_words[w + 2u];
-    return bvh_triangle_test(org, wr, a.xyz, b.xyz, c.xyz, vec3(a.w, b.w, c.w), inst, i, hit);
-}
-
 // The primitive, and with one level the instance, of the closest hit's record from the ID
 // table (cwbvh.h): read once per query, not in the leaf loop.
 void cwbvh_hit_ids(bool two_level, inout TraceHit hit) {
@@ -120,6 +110,31 @@ void cwbvh_hit_ids(bool two_level, inout TraceHit hit) {
         hit.primitive = id >> head.y;
         if (!two_level) hit.instance = id & ((1u << head.y) - 1u);
     }
+}
+
+// Tests triangle record i (cwbvh.h). The hit names record i as its primitive and inst as its
+// instance until cwbvh_hit_ids replaces them with what the record stands for; the alpha test,
+// where the scene has alpha, resolves them for the candidate at once.
+bool cwbvh_triangle_hit(uint i, vec3 org, WatertightRay wr, bool two_level, uint inst, Ray ray,
+                        inout TraceHit hit) {
+    uint w = CWBVH_TRIANGLE_WORDS * i + 1u;
+    vec4 a = bvh_triangle_words[w];
+    vec4 b = bvh_triangle_words[w + 1u];
+    vec4 c = bvh_triangle_words[w + 2u];
+    vec3 tuv;
+    if (!bvh_triangle_candidate(org, wr, a.xyz, b.xyz, c.xyz, vec3(a.w, b.w, c.w), hit.t, tuv))
+        return false;
+    if (feature_on(scene_features, FEATURE_ALPHA)) {
+        TraceHit ids;
+        ids.t = tuv.x;
+        ids.instance = inst;
+        ids.primitive = i;
+        ids.bary = vec2(tuv.y, tuv.z);
+        cwbvh_hit_ids(two_level, ids);
+        if (!scene_alpha_covers(ids.instance, ids.primitive, ids.bary, ray)) return false;
+    }
+    bvh_accept(tuv, inst, i, hit);
+    return true;
 }
 
 bool cwbvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
@@ -184,7 +199,7 @@ bool cwbvh_traverse(Ray ray, bool any_hit, out TraceHit hit) {
                 group = uvec2(meshes[I.mesh].bvh_root, CWBVH_ROOT_GROUP);
                 break;
             }
-            if (!cwbvh_triangle_hit(i, org, wr, inst, hit)) continue;
+            if (!cwbvh_triangle_hit(i, org, wr, two_level, inst, ray, hit)) continue;
             found = true;
             if (any_hit) return true;
         }

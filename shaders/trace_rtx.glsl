@@ -13,8 +13,9 @@
 // exactly at an end point. Ray origins leave surfaces by the error-bound offset (shared/offset.h;
 // 4 times the bound here, render_pipeline.rgen) and shadow rays end at an offset light point
 // (shared/path.h), so neither end lies on a surface.
-// All geometry is opaque (built with VK_GEOMETRY_OPAQUE_BIT_KHR; the rays say so too), so no
-// any-hit shader ever runs. gl_HitTEXT is the parameter of the world-space ray: the instance
+// Geometry is opaque (VK_GEOMETRY_OPAQUE_BIT_KHR), and so are the rays, so no any-hit shader
+// runs, except in a scene with alpha (FEATURE_ALPHA): there the rays leave opacity to the
+// instances, and those of materials with alpha run shaders/alpha_test.rahit. gl_HitTEXT is the parameter of the world-space ray: the instance
 // transform leaves t unchanged, as in trace_bvh.glsl.
 #ifndef TP_SHADERS_TRACE_RTX_GLSL
 #define TP_SHADERS_TRACE_RTX_GLSL
@@ -22,6 +23,7 @@
 #extension GL_EXT_ray_tracing : require
 
 #include "bindings.glsl"
+#include "features.glsl"
 #include "rt_interface.h"
 #include "shared/path.h"
 #include "trace_hit.glsl"
@@ -41,11 +43,16 @@ const float TRACE_OFFSET_SLACK = 4.0f;
 // normal").
 const bool SCENE_LIGHT_NORMAL_FROM_VERTICES = true;
 
+// The rays' opacity flag: forced opaque unless some instance needs its any-hit alpha test.
+uint trace_opaque_flag() {
+    return feature_on(scene_features, FEATURE_ALPHA) ? gl_RayFlagsNoneEXT : gl_RayFlagsOpaqueEXT;
+}
+
 layout(location = RT_PAYLOAD_HIT) rayPayloadEXT TraceHit rt_hit;
 layout(location = RT_PAYLOAD_SHADOW) rayPayloadEXT uint rt_occluded;
 
 bool trace_closest(Ray ray, out TraceHit hit) {
-    traceRayEXT(tlas, gl_RayFlagsOpaqueEXT, 0xFFu, 0u, 0u, RT_MISS_CLOSEST, ray.origin, 0.0f,
+    traceRayEXT(tlas, trace_opaque_flag(), 0xFFu, 0u, 0u, RT_MISS_CLOSEST, ray.origin, 0.0f,
                 ray.dir, ray.tmax, RT_PAYLOAD_HIT);
     hit = rt_hit;
     return rt_hit.instance != TRACE_MISS;
@@ -57,7 +64,7 @@ bool trace_occluded(Ray ray) {
     rt_occluded = 1u;
     traceRayEXT(tlas,
                 gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT |
-                    gl_RayFlagsOpaqueEXT,
+                    trace_opaque_flag(),
                 0xFFu, 0u, 0u, RT_MISS_SHADOW, ray.origin, 0.0f, ray.dir, ray.tmax,
                 RT_PAYLOAD_SHADOW);
     return rt_occluded != 0u;

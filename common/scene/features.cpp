@@ -26,6 +26,12 @@ const char* feature_name(uint32_t feature) {
         return "environment_map";
     case FEATURE_INSTANCING:
         return "instancing";
+    case FEATURE_PBR:
+        return "pbr";
+    case FEATURE_NORMAL_MAPS:
+        return "normal_maps";
+    case FEATURE_ALPHA:
+        return "alpha";
     default:
         return "";
     }
@@ -50,7 +56,21 @@ SceneFeatures analyze_features(const FlatScene& scene) {
         if (uses > 1) f.mask |= FEATURE_INSTANCING;
     for (const Instance& inst : scene.instances) {
         const Material& m = scene.materials[inst.material];
+        const bool pbr = m.type == MATERIAL_PBR;
+        const int pbr_slots[] = {m.metallic_roughness_texture, m.normal_texture,
+                                 m.emissive_texture,           m.transmission_texture,
+                                 m.specular_texture,           m.specular_color_texture};
         if (m.kd_texture != NO_TEXTURE) f.mask |= FEATURE_TEXTURES;
+        if (pbr) {
+            f.mask |= FEATURE_PBR;
+            for (int slot : pbr_slots)
+                if (slot != NO_TEXTURE) f.mask |= FEATURE_TEXTURES;
+            // A normal map bends normals only where the mesh has a tangent frame.
+            if (m.normal_texture != NO_TEXTURE &&
+                (scene.meshes[inst.mesh].flags & MESH_HAS_TANGENTS) != 0u)
+                f.mask |= FEATURE_NORMAL_MAPS;
+        }
+        if (m.alpha_mode != ALPHA_OPAQUE) f.mask |= FEATURE_ALPHA;
         if (m.type == MATERIAL_PHONG && !is_black(m.ks)) f.mask |= FEATURE_PHONG_SPECULAR;
         if (m.type == MATERIAL_MIRROR) f.mask |= FEATURE_MIRROR;
         if (m.type == MATERIAL_DIELECTRIC) f.mask |= FEATURE_DIELECTRIC;
@@ -59,7 +79,7 @@ SceneFeatures analyze_features(const FlatScene& scene) {
         if (!is_black(m.ke)) f.mask |= FEATURE_EMISSIVE_TRIANGLES;
     }
     for (const Light& l : scene.lights) {
-        if (l.type == LIGHT_POINT) f.mask |= FEATURE_POINT_LIGHTS;
+        if (l.type == LIGHT_POINT || l.type == LIGHT_SPOT) f.mask |= FEATURE_POINT_LIGHTS;
         if (l.type == LIGHT_DIRECTIONAL) f.mask |= FEATURE_DIRECTIONAL_LIGHTS;
     }
     if (scene.params.env_light != NO_INDEX)

@@ -126,6 +126,13 @@ FlatScene flatten(const Scene& input) {
     std::map<uint32_t, uint32_t> mesh_slot;
     std::vector<glm::dvec3> corner; // per slot
     std::vector<double> extent;     // per slot: the largest stored coordinate
+    // The second uv set and the tangents are stored only where some mesh has them, then for
+    // every vertex (zero where a mesh has none), like the normals and the first uv set.
+    bool any_uv1 = false, any_tangents = false;
+    for (const Object& o : scene.objects) {
+        any_uv1 |= !scene.meshes[o.mesh].uvs1.empty();
+        any_tangents |= !scene.meshes[o.mesh].tangents.empty();
+    }
     for (const Object& o : scene.objects) {
         if (mesh_slot.count(o.mesh)) continue;
         const Mesh& m = scene.meshes[o.mesh];
@@ -134,8 +141,9 @@ FlatScene flatten(const Scene& input) {
         info.first_vertex = uint32_t(f.positions.size());
         info.triangle_count = uint32_t(m.triangles.size());
         info.vertex_count = uint32_t(m.positions.size());
-        info.flags =
-            (m.normals.empty() ? 0u : MESH_HAS_NORMALS) | (m.uvs.empty() ? 0u : MESH_HAS_UVS);
+        info.flags = (m.normals.empty() ? 0u : MESH_HAS_NORMALS) |
+                     (m.uvs.empty() ? 0u : MESH_HAS_UVS) | (m.uvs1.empty() ? 0u : MESH_HAS_UV1) |
+                     (m.tangents.empty() ? 0u : MESH_HAS_TANGENTS);
         info.bvh_root = NO_INDEX;
         Box box;
         for (const glm::dvec3& p : m.positions) box.add(p);
@@ -151,6 +159,18 @@ FlatScene flatten(const Scene& input) {
             f.uvs.resize(f.positions.size(), vec2(0.0f));
         else
             f.uvs.insert(f.uvs.end(), m.uvs.begin(), m.uvs.end());
+        if (any_uv1) {
+            if (m.uvs1.empty())
+                f.uvs1.resize(f.positions.size(), vec2(0.0f));
+            else
+                f.uvs1.insert(f.uvs1.end(), m.uvs1.begin(), m.uvs1.end());
+        }
+        if (any_tangents) {
+            if (m.tangents.empty())
+                f.tangents.resize(f.positions.size(), vec4(0.0f));
+            else
+                f.tangents.insert(f.tangents.end(), m.tangents.begin(), m.tangents.end());
+        }
         f.triangles.insert(f.triangles.end(), m.triangles.begin(), m.triangles.end());
         f.unique_triangles += m.triangles.size();
         mesh_slot[o.mesh] = uint32_t(f.meshes.size());
@@ -215,15 +235,21 @@ FlatScene flatten(const Scene& input) {
     f.params.max_depth = scene.settings.max_depth;
     f.params.min_depth = scene.settings.min_depth;
 
-    // Textures, concatenated.
+    // Images, their words concatenated, and the slots that read them.
     for (const Texture& t : scene.textures) {
         TextureInfo info{};
-        info.offset = uint32_t(f.texels.size());
+        if (f.texel_words.size() + t.words.size() > size_t(UINT32_MAX))
+            input_error("{}: the textures hold more than 2^32 words (16 GiB) of texels, the most "
+                        "a texel index addresses",
+                        scene.path);
+        info.offset = uint32_t(f.texel_words.size());
         info.width = t.width;
         info.height = t.height;
+        info.format = t.format;
         f.textures.push_back(info);
-        f.texels.insert(f.texels.end(), t.texels.begin(), t.texels.end());
+        f.texel_words.insert(f.texel_words.end(), t.words.begin(), t.words.end());
     }
+    f.texture_slots = scene.texture_slots;
 
     // Lights, with selection weights proportional to an estimate of emitted power; any
     // positive weights give an unbiased estimator, power makes it efficient.
@@ -239,12 +265,23 @@ FlatScene flatten(const Scene& input) {
     for (const LightDesc& d : scene.lights) {
         Light l{};
         l.type = d.type;
-        // A point light's p0 is a position; a directional light's is a direction.
-        l.p0 = d.type == LIGHT_POINT ? vec3(d.position - f.origin) : d.direction;
+        // A point or spot light's p0 is a position; a directional light's is a direction.
+        const bool punctual = d.type == LIGHT_POINT || d.type == LIGHT_SPOT;
+        l.p0 = punctual ? vec3(d.position - f.origin) : d.direction;
         l.value = d.value;
+        double solid_angle = 4.0 * pi;
+        if (d.type == LIGHT_SPOT) {
+            // The falloff of lights.h, spot_light_falloff, as a scale and an offset of the
+            // cosine to the axis (KHR_lights_punctual, "Spot").
+            const double ci = std::cos(double(d.inner_cone)), co = std::cos(double(d.outer_cone));
+            const double scale = 1.0 / std::max(1e-3, ci - co);
+            l.p1 = d.direction;
+            l.p2 = vec3(float(scale), float(-co * scale), 0.0f);
+            solid_angle = 2.0 * pi * (1.0 - co); // the outer cone bounds its power
+        }
         f.lights.push_back(l);
         const double lum = double(luminance(l.value));
-        weights.push_back(l.type == LIGHT_POINT ? 4.0 * pi * lum : disk * lum);
+        weights.push_back(punctual ? solid_angle * lum : disk * lum);
     }
     for (uint32_t i = 0; i < f.instances.size(); ++i) {
         Instance& inst = f.instances[i];
@@ -252,6 +289,13 @@ FlatScene flatten(const Scene& input) {
         if (is_black(m.ke)) continue;
         const MeshInfo& mesh = f.meshes[inst.mesh];
         inst.light_offset = uint32_t(f.lights.size());
+        // An emissive texture scales the radiance where the light is sampled (shared/
+        // scene_access.h); its mean stands for it in the selection weights, which need only be
+        // positive wherever the light emits.
+        vec3 emission_mean(1.0f);
+        if (m.type == MATERIAL_PBR && m.emissive_texture != NO_TEXTURE)
+            emission_mean = scene.textures[scene.texture_slots[size_t(m.emissive_texture)].image]
+                                .mean_linear(true);
         // The front face is the mesh's counter-clockwise side, carried to the world by the
         // normal transform M^-T (surface.h), whose sign does not follow det M. A mirroring
         // transform (det M < 0) makes the world-space winding clockwise, so the light's vertices
@@ -271,7 +315,7 @@ FlatScene flatten(const Scene& input) {
             l.primitive = t;
             l.value = m.ke;
             f.lights.push_back(l);
-            weights.push_back(pi * double(l.area) * double(luminance(m.ke)));
+            weights.push_back(pi * double(l.area) * double(luminance(m.ke * emission_mean)));
         }
     }
     f.params.env_light = NO_INDEX;
@@ -286,13 +330,13 @@ FlatScene flatten(const Scene& input) {
             const Texture& t = scene.textures.at(size_t(scene.environment.texture));
             f.params.env_texture = scene.environment.texture;
             // Pixel (x, y) covers solid angle (2 pi / w)(pi / h) sin(theta_y).
-            std::vector<double> pixel_w(t.texels.size());
+            std::vector<double> pixel_w(t.texel_count());
             double integral = 0.0;
             for (uint32_t y = 0; y < t.height; ++y) {
                 const double sin_theta = std::sin(pi * (y + 0.5) / t.height);
                 for (uint32_t x = 0; x < t.width; ++x) {
                     const size_t i = size_t(y) * t.width + x;
-                    pixel_w[i] = double(luminance(t.texels[i])) * sin_theta;
+                    pixel_w[i] = double(luminance(vec3(t.linear(i, true)))) * sin_theta;
                     integral += pixel_w[i];
                 }
             }

@@ -42,14 +42,17 @@ struct FlatScene {
     std::vector<vec3> positions;
     std::vector<vec3> normals;    // parallel to positions (zero where a mesh has none)
     std::vector<vec2> uvs;        // parallel to positions (zero where a mesh has none)
+    std::vector<vec2> uvs1;       // empty, or parallel to positions: the second uv set
+    std::vector<vec4> tangents;   // empty, or parallel to positions: normal maps' tangents
     std::vector<uvec3> triangles; // mesh-local vertex indices
     std::vector<Instance> instances;
     std::vector<std::string> instance_names;
 
     std::vector<Light> lights;
     std::vector<AliasEntry> light_table; // one entry per light: selection by power
-    std::vector<TextureInfo> textures;
-    std::vector<vec3> texels;
+    std::vector<TextureInfo> textures;       // the images
+    std::vector<uint32_t> texel_words;       // their texels (TextureInfo::offset, format)
+    std::vector<TextureSlot> texture_slots;  // how materials read the images
     std::vector<AliasEntry> env_table; // environment-map pixels, when there is a map
 
     // World space as both engines see it is camera-relative ("large world coordinates"): the

@@ -96,15 +96,13 @@ Mesh make_box() {
 }
 
 Texture make_checker_texture(uint32_t size, uint32_t checks, vec3 a, vec3 b) {
-    Texture t;
-    t.width = t.height = size;
-    t.texels.resize(size_t(size) * size);
+    std::vector<vec3> texels(size_t(size) * size);
     for (uint32_t y = 0; y < size; ++y)
         for (uint32_t x = 0; x < size; ++x) {
             const uint32_t cx = x * checks / size, cy = y * checks / size;
-            t.texels[size_t(y) * size + x] = ((cx + cy) & 1u) ? b : a;
+            texels[size_t(y) * size + x] = ((cx + cy) & 1u) ? b : a;
         }
-    return t;
+    return texture_from_linear_rgb(size, size, texels);
 }
 
 namespace {
@@ -160,9 +158,7 @@ struct GradientNoise {
 Texture make_marble_texture(uint32_t size, float scale, vec3 a, vec3 b, uint32_t seed) {
     constexpr int base_period = 8; // lattice cells across the texture at the first octave
     const GradientNoise noise(seed);
-    Texture t;
-    t.width = t.height = size;
-    t.texels.resize(size_t(size) * size);
+    std::vector<vec3> texels(size_t(size) * size);
     for (uint32_t y = 0; y < size; ++y)
         for (uint32_t x = 0; x < size; ++x) {
             const float s = float(x) / float(size), tt = float(y) / float(size);
@@ -180,9 +176,9 @@ Texture make_marble_texture(uint32_t size, float scale, vec3 a, vec3 b, uint32_t
             // The vein phase advances an integer number of periods across the tile.
             const float phase = TWO_PI * std::round(scale) * s + 6.0f * turbulence;
             const float vein = 0.5f + 0.5f * std::sin(phase);
-            t.texels[size_t(y) * size + x] = glm::mix(a, b, std::pow(vein, 0.5f));
+            texels[size_t(y) * size + x] = glm::mix(a, b, std::pow(vein, 0.5f));
         }
-    return t;
+    return texture_from_linear_rgb(size, size, texels);
 }
 
 } // namespace tp

@@ -10,12 +10,15 @@ void add_scene_content(Fnv1a& h, const FlatScene& s) {
     h.array(s.positions);
     h.array(s.normals);
     h.array(s.uvs);
+    h.array(s.uvs1);
+    h.array(s.tangents);
     h.array(s.triangles);
     h.array(s.instances);
     h.array(s.lights);
     h.array(s.light_table);
     h.array(s.textures);
-    h.array(s.texels);
+    h.array(s.texel_words);
+    h.array(s.texture_slots);
     h.array(s.env_table);
     const RenderParams& p = s.params;
     h.value(p.light_count);

@@ -13,7 +13,7 @@
 //                                         (lights.h, light_normal)
 // GLSL includes it after those; C++ includes it inside the engine's class template
 // (cpu_ref/cpu_engine.h), so that these functions become its members. It includes nothing
-// itself: lights.h, surface.h, texture.h, alpha.h and features.h come first.
+// itself: lights.h, path.h, surface.h, texture.h, alpha.h and features.h come first.
 #ifndef TP_SHARED_SCENE_ACCESS_H
 #define TP_SHARED_SCENE_ACCESS_H
 

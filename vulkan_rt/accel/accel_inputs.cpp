@@ -97,7 +97,7 @@ void check_accel_limits(const FlatScene& scene, const AccelLimits& limits) {
 }
 
 VkAccelerationStructureInstanceKHR instance_record(const Instance& inst, uint32_t index,
-                                                   uint64_t blas_address, bool exact) {
+                                                   uint64_t blas_address, bool exact, bool alpha) {
     VkAccelerationStructureInstanceKHR r{};
     const vec4 rows[3] = {inst.to_world0, inst.to_world1, inst.to_world2};
     for (int i = 0; i < 3; ++i)
@@ -106,7 +106,8 @@ VkAccelerationStructureInstanceKHR instance_record(const Instance& inst, uint32_
     r.mask = 0xFF;
     r.instanceShaderBindingTableRecordOffset = exact ? RT_HIT_GROUP_EXACT : RT_HIT_GROUP_TRIANGLES;
     r.flags = VK_GEOMETRY_INSTANCE_TRIANGLE_FACING_CULL_DISABLE_BIT_KHR |
-              VK_GEOMETRY_INSTANCE_FORCE_OPAQUE_BIT_KHR;
+              (alpha ? VK_GEOMETRY_INSTANCE_FORCE_NO_OPAQUE_BIT_KHR
+                     : VK_GEOMETRY_INSTANCE_FORCE_OPAQUE_BIT_KHR);
     r.accelerationStructureReference = blas_address;
     return r;
 }
@@ -118,7 +119,9 @@ instance_records(const FlatScene& scene, const std::vector<uint64_t>& mesh_blas_
     for (uint32_t i = 0; i < scene.instances.size(); ++i) {
         const uint32_t m = scene.instances[i].mesh;
         const uint64_t blas = mesh_blas_address[m];
-        if (blas != 0) out.push_back(instance_record(scene.instances[i], i, blas, exact[m] != 0));
+        const bool alpha = scene.material_of(i).alpha_mode != ALPHA_OPAQUE;
+        if (blas != 0)
+            out.push_back(instance_record(scene.instances[i], i, blas, exact[m] != 0, alpha));
     }
     return out;
 }

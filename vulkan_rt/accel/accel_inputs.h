@@ -61,9 +61,10 @@ void check_accel_limits(const FlatScene& scene, const AccelLimits& limits);
 // the closest-hit shader reports (gl_InstanceCustomIndexEXT) and the shaders use to read
 // Instance[index] (mesh, material, lights); mask 0xFF (every ray sees every instance);
 // hit group RT_HIT_GROUP_EXACT for an exact mesh, else RT_HIT_GROUP_TRIANGLES
-// (shaders/rt_interface.h); no face culling, opaque.
+// (shaders/rt_interface.h); no face culling; opaque, unless `alpha` (its material has alpha
+// as coverage: the hit groups' any-hit shader, shaders/alpha_test.rahit, then tests it).
 VkAccelerationStructureInstanceKHR instance_record(const Instance& inst, uint32_t index,
-                                                   uint64_t blas_address, bool exact);
+                                                   uint64_t blas_address, bool exact, bool alpha);
 
 // One record per instance whose mesh has a BLAS, in instance order. mesh_blas_address[m] is the
 // device address of mesh m's BLAS, 0 for a mesh without triangles; `exact` as in

@@ -12,6 +12,7 @@
 
 // Generated from shaders/*.rgen, *.rmiss, *.rchit (shaders/spirv.cmake).
 #include "closest_hit.spv.h"
+#include "alpha_test.spv.h"
 #include "exact_triangle.spv.h"
 #include "miss.spv.h"
 #include "render_pipeline.spv.h"
@@ -20,7 +21,7 @@
 namespace tp {
 namespace {
 
-// Interface slots 0..16 without BINDING_BVH_TRIS, with the TLAS in BINDING_TLAS. Only the
+// Every interface slot but BINDING_BVH_TRIS, with the TLAS in BINDING_TLAS. Only the
 // ray-generation shader reads them; the hit and miss shaders touch only their payloads.
 std::vector<BindingSlot> pipeline_slots() {
     std::vector<BindingSlot> slots;
@@ -51,19 +52,21 @@ const Stage kStages[] = {
     {VK_SHADER_STAGE_CLOSEST_HIT_BIT_KHR, tp_spirv_closest_hit, sizeof(tp_spirv_closest_hit)},
     {VK_SHADER_STAGE_INTERSECTION_BIT_KHR, tp_spirv_exact_triangle,
      sizeof(tp_spirv_exact_triangle)},
+    {VK_SHADER_STAGE_ANY_HIT_BIT_KHR, tp_spirv_alpha_test, sizeof(tp_spirv_alpha_test)},
 };
 constexpr uint32_t kClosestHitStage = 3;
 constexpr uint32_t kExactStage = 4;
+constexpr uint32_t kAlphaStage = 5;
 
 VkRayTracingShaderGroupCreateInfoKHR shader_group(VkRayTracingShaderGroupTypeKHR type,
                                                   uint32_t general, uint32_t closest_hit,
-                                                  uint32_t intersection) {
+                                                  uint32_t intersection, uint32_t any_hit) {
     VkRayTracingShaderGroupCreateInfoKHR g{};
     g.sType = VK_STRUCTURE_TYPE_RAY_TRACING_SHADER_GROUP_CREATE_INFO_KHR;
     g.type = type;
     g.generalShader = general;
     g.closestHitShader = closest_hit;
-    g.anyHitShader = VK_SHADER_UNUSED_KHR;
+    g.anyHitShader = any_hit;
     g.intersectionShader = intersection;
     return g;
 }
@@ -78,10 +81,11 @@ RtProgram::RtProgram(const VulkanContext& ctx, const RtFunctions& rt, uint32_t p
                      const uint32_t* raygen, size_t raygen_bytes, const RenderConstants& constants,
                      bool exact)
     : ctx_(ctx), rt_(rt), raygen_spirv_(raygen), raygen_bytes_(raygen_bytes), constants_(constants),
-      hit_groups_(exact ? 2u : 1u),
+      hit_groups_(exact ? 2u : 1u), alpha_(feature_on(constants.features, FEATURE_ALPHA)),
       bindings_(ctx, pipeline_slots(),
                 VK_SHADER_STAGE_RAYGEN_BIT_KHR |
-                    (exact ? VK_SHADER_STAGE_INTERSECTION_BIT_KHR : VkShaderStageFlagBits(0)),
+                    (exact ? VK_SHADER_STAGE_INTERSECTION_BIT_KHR : VkShaderStageFlagBits(0)) |
+                    (alpha_ ? VK_SHADER_STAGE_ANY_HIT_BIT_KHR : VkShaderStageFlagBits(0)),
                 push_bytes) {
     create_pipeline();
     try {
@@ -114,8 +118,13 @@ void RtProgram::create_pipeline() {
     // reports the hit), so there is no per-material hit group to leave out (docs/gpu.md).
     const RenderSpecialization spec(constants_);
     uint64_t shader_hash = fnv1a64(nullptr, 0);
-    const uint32_t stage_count = kClosestHitStage + hit_groups_;
-    for (uint32_t i = 0; i < stage_count; ++i) {
+    // The stages in kStages order: the intersection shader only with the procedural group, the
+    // any-hit shader only for a scene with alpha.
+    std::vector<uint32_t> used;
+    for (uint32_t i = 0; i <= kClosestHitStage; ++i) used.push_back(i);
+    if (hit_groups_ == 2) used.push_back(kExactStage);
+    if (alpha_) used.push_back(kAlphaStage);
+    for (uint32_t i : used) {
         VkShaderModuleCreateInfo mi{};
         mi.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
         const bool own_raygen = i == 0 && raygen_spirv_;
@@ -131,20 +140,28 @@ void RtProgram::create_pipeline() {
         st.stage = kStages[i].stage;
         st.module = module;
         st.pName = "main";
-        if (kStages[i].stage == VK_SHADER_STAGE_RAYGEN_BIT_KHR) st.pSpecializationInfo = &spec.info;
+        if (kStages[i].stage == VK_SHADER_STAGE_RAYGEN_BIT_KHR ||
+            kStages[i].stage == VK_SHADER_STAGE_ANY_HIT_BIT_KHR)
+            st.pSpecializationInfo = &spec.info;
         stages.push_back(st);
         stage_bits.push_back(st.stage);
     }
     // Ray generation and miss shaders are "general" groups; the built-in triangles' hit group
-    // has the closest hit alone (no any-hit: all geometry is opaque).
+    // has the closest hit, and the alpha test as its any-hit shader in a scene with alpha (only
+    // the instances not forced opaque run it). Group entries index `stages`, in `used` order.
+    const uint32_t exact_stage = kExactStage;
+    const uint32_t any_hit = alpha_ ? uint32_t(used.size() - 1) : VK_SHADER_UNUSED_KHR;
     for (uint32_t i = 0; i < kClosestHitStage; ++i)
         groups.push_back(shader_group(VK_RAY_TRACING_SHADER_GROUP_TYPE_GENERAL_KHR, i,
-                                      VK_SHADER_UNUSED_KHR, VK_SHADER_UNUSED_KHR));
+                                      VK_SHADER_UNUSED_KHR, VK_SHADER_UNUSED_KHR,
+                                      VK_SHADER_UNUSED_KHR));
     groups.push_back(shader_group(VK_RAY_TRACING_SHADER_GROUP_TYPE_TRIANGLES_HIT_GROUP_KHR,
-                                  VK_SHADER_UNUSED_KHR, kClosestHitStage, VK_SHADER_UNUSED_KHR));
+                                  VK_SHADER_UNUSED_KHR, kClosestHitStage, VK_SHADER_UNUSED_KHR,
+                                  any_hit));
     if (hit_groups_ == 2)
         groups.push_back(shader_group(VK_RAY_TRACING_SHADER_GROUP_TYPE_PROCEDURAL_HIT_GROUP_KHR,
-                                      VK_SHADER_UNUSED_KHR, kClosestHitStage, kExactStage));
+                                      VK_SHADER_UNUSED_KHR, kClosestHitStage, exact_stage,
+                                      any_hit));
     VkRayTracingPipelineCreateInfoKHR ci{};
     ci.sType = VK_STRUCTURE_TYPE_RAY_TRACING_PIPELINE_CREATE_INFO_KHR;
     ci.stageCount = uint32_t(stages.size());

@@ -49,6 +49,7 @@ class RtProgram {
     size_t raygen_bytes_;
     RenderConstants constants_; // the ray-generation shader's specialization
     uint32_t hit_groups_;       // 1, or 2 with the procedural hit group
+    bool alpha_;                // the scene has alpha: the hit groups' any-hit alpha test
     PipelineCacheUse cache_use_;
     PipelineReport report_;
     PipelineBindings bindings_;

@@ -30,16 +30,20 @@ SceneBuffers upload_scene(const VulkanContext& ctx, const FlatScene& scene,
     put(BINDING_POSITIONS, scene.positions.data(), scene.positions.size() * sizeof(vec3),
         storage | geometry_usage);
     put_if(BINDING_NORMALS, normals, scene.normals);
-    // The shaders read uvs only to look up a diffuse texture (scene_access.glsl).
+    // The shaders read uvs only to look textures up (shared/scene_access.h), tangents only for
+    // normal maps.
     const bool textures = feature_on(features, FEATURE_TEXTURES);
     put_if(BINDING_UVS, uvs && textures, scene.uvs);
+    put_if(BINDING_UVS1, textures, scene.uvs1);
+    put_if(BINDING_TANGENTS, feature_on(features, FEATURE_NORMAL_MAPS), scene.tangents);
     put(BINDING_TRIANGLES, scene.triangles.data(), scene.triangles.size() * sizeof(uvec3),
         storage | geometry_usage);
     put_if(BINDING_LIGHTS, true, scene.lights);
     put_if(BINDING_LIGHT_TABLE, true, scene.light_table);
     const bool env_map = feature_on(features, FEATURE_ENV_MAP);
     put_if(BINDING_TEXTURES, textures || env_map, scene.textures);
-    put_if(BINDING_TEXELS, textures || env_map, scene.texels);
+    put_if(BINDING_TEXELS, textures || env_map, scene.texel_words);
+    put_if(BINDING_TEXTURE_SLOTS, textures, scene.texture_slots);
     put_if(BINDING_ENV_TABLE, env_map, scene.env_table);
     up.flush();
     return sb;

@@ -19,8 +19,8 @@
 namespace tp {
 
 struct SceneBuffers {
-    // Indexed by the BINDING_* slots of shaders/interface.h, BINDING_PARAMS..BINDING_ENV_TABLE.
-    std::array<Buffer, BINDING_ENV_TABLE + 1> slots;
+    // Indexed by the scene's BINDING_* slots of shaders/interface.h, 0 .. BINDING_SCENE_COUNT - 1.
+    std::array<Buffer, BINDING_SCENE_COUNT> slots;
     uint64_t bytes = 0; // device memory of the real (non-placeholder) arrays
 };
 
