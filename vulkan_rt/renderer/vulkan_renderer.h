@@ -3,9 +3,9 @@
 
 #include "render/render_options.h"
 #include "scene/flatten.h"
-#include "vulkan_rt/accel/bvh_builder.h"
+#include "vulkan_rt/compute_mode/bvh_builder.h"
 #include "vulkan_rt/device/device_info.h"
-#include "vulkan_rt/renderer/vk_mode.h"
+#include "vulkan_rt/device/vk_mode.h"
 
 #include <optional>
 
