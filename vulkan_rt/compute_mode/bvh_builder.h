@@ -2,7 +2,8 @@
 // (rtcBuildBVH, binned SAH, embree_tree.h) in one of two layouts: binary nodes (shared/intersect.h,
 // traversed by shaders/trace_bvh.glsl) or compressed 8-wide nodes, the SAH-optimal collapse of a
 // binary tree (wide_collapse.h, wide_bvh.h, traversed by shaders/trace_cwbvh.glsl). Either comes in
-// the shape that the render's feature mask asks for (issue 9):
+// the shape that the render's feature mask asks for (scene features: docs/gpu.md,
+// "Specialization to the scene's features"):
 //   two levels (FEATURE_INSTANCING set): one BVH per mesh in object space, an instanced mesh
 //     stored once, and one over the instances' world boxes;
 //   one level (FEATURE_INSTANCING clear): one BVH over the triangles of every instance in world

@@ -1,6 +1,8 @@
-// The Vulkan engine's two modes (DESIGN.md): software BVH traversal in a compute shader, or the
-// ray-tracing pipeline, and the words that name them on the command line and in the outputs.
-// Compute mode's BVH layout is a choice of its own (--bvh, bvh_builder.h).
+// The Vulkan engine's two modes (docs/design.md): software BVH traversal in a compute shader, or
+// the ray-tracing pipeline, and the words that name them on the command line and in the outputs.
+// Compute mode's BVH layout is a choice of its own (--bvh, compute_mode/bvh_builder.h). The enum
+// lives with the device because what a device offers decides which modes it runs
+// (device_info.h); the modes themselves are the layers above (compute_mode/, pipeline_mode/).
 #pragma once
 
 #include <optional>

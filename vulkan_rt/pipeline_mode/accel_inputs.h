@@ -26,11 +26,11 @@ struct BlasGeometry {
 
 // Which meshes pipeline mode intersects with shared/intersect.h rather than the driver's
 // triangle test (1: exact), as the compute mode does everywhere. The driver's distance to a
-// triangle errs by ~u times the triangle's size, not the distance (measured on the H200: a
-// floor with vertices at +-1e8 came out in front of a sphere standing on it; docs/stress.md);
-// the offsets of shared/offset.h assume errors of ~u times the distance. A mesh is exact when
-// its longest world-space edge, over its instances, exceeds kExactEdgeRatio times the scene's
-// content scale: the lower median of the instances' world bounding-box diagonals.
+// triangle errs by ~u times the triangle's size, not the distance (docs/gpu.md, "Exact meshes";
+// docs/stress.md, "Floor at ±1e8"); the offsets of shared/offset.h assume errors of ~u times
+// the distance. A mesh is exact when its longest world-space edge, over its instances, exceeds
+// kExactEdgeRatio times the scene's content scale: the lower median of the instances' world
+// bounding-box diagonals.
 constexpr float kExactEdgeRatio = 1024.0f;
 std::vector<uint8_t> exact_triangle_meshes(const FlatScene& scene);
 
