@@ -12,8 +12,9 @@
 #include "trace_hit.glsl"
 
 // The leaf items as 16-byte words, so that every load is one aligned 16-byte transaction: the
-// binary layout's BvhTriangle (vulkan_rt/accel/bvh_builder.h) as 4 words, a (primitive in w), b
-// (with one level the instance in w), c and the plane normal; the wide layout's records (cwbvh.h).
+// binary layout's BvhTriangle (vulkan_rt/compute_mode/bvh_builder.h) as 4 words, a (primitive in
+// w), b (with one level the instance in w), c and the plane normal; the wide layout's records
+// (cwbvh.h).
 layout(std430, set = 0, binding = BINDING_BVH_TRIS) readonly buffer BvhTriangleBuffer {
     vec4 bvh_triangle_words[];
 };

@@ -1,9 +1,9 @@
 #version 460
 // Closest hit of trace_closest (trace_rtx.glsl): hands the hit back to the ray-generation
 // shader, which does all the shading. The instance's custom index is its FlatScene index
-// (vulkan_rt/accel/accel_inputs.cpp); the primitive is the triangle's index in its mesh, because each
-// BLAS holds exactly one mesh's triangles in order; the two attributes are the barycentric
-// weights of vertices 1 and 2.
+// (vulkan_rt/pipeline_mode/accel_inputs.cpp); the primitive is the triangle's index in its mesh,
+// because each BLAS holds exactly one mesh's triangles in order; the two attributes are the
+// barycentric weights of vertices 1 and 2.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_ray_tracing : require
 

@@ -1,7 +1,7 @@
 #version 460
-// Ray queries for vulkan_rt/renderer/ray_queries.h in compute mode: one ray per invocation through the
-// compute mode's trace include (trace_bvh.glsl, or with TP_TRACE_WIDE trace_cwbvh.glsl; the
-// render shader's bindings and BVH, in the shape its feature mask gives), the closest hit and
+// Ray queries for vulkan_rt/renderer/gpu_ray_queries.h in compute mode: one ray per invocation
+// through the compute mode's trace include (trace_bvh.glsl, or with TP_TRACE_WIDE trace_cwbvh.glsl;
+// the render shader's bindings and BVH, in the shape its feature mask gives), the closest hit and
 // the occlusion query's answer back. On lavapipe every loop of a SIMD group stops silently once
 // the group has iterated 65535 times (shaders/render_items.glsl); a probe loop after the traces
 // reports whether that budget held, so that a cut traversal is never mistaken for a miss.

@@ -1,6 +1,7 @@
 // The compressed 8-wide BVH node of compute mode (Ylitie, Karras & Laine, "Efficient Incoherent
 // Ray Traversal on GPUs Through Compressed Wide BVHs", HPG 2017, sec. 3.1), as the host writes it
-// (vulkan_rt/accel/wide_bvh.h) and shaders/trace_cwbvh.glsl reads it: 80 bytes, five 16-byte words.
+// (vulkan_rt/compute_mode/wide_bvh.h) and shaders/trace_cwbvh.glsl reads it: 80 bytes, five
+// 16-byte words.
 //
 //   word 0  p.x, p.y, p.z (float)    e.x | e.y << 8 | e.z << 16 | imask << 24
 //   word 1  child_base  triangle_base  meta[0..3]  meta[4..7]

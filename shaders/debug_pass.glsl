@@ -15,7 +15,8 @@ void debug_pass(uvec2 pixel) {
         return;
     }
     if (pixel.x != debug_header.pixel_x || pixel.y != debug_header.pixel_y) return;
-    // One sample per dispatch (vulkan_rt/renderer/render_loop.cpp), well inside lavapipe's loop budget.
+    // One sample per dispatch (vulkan_rt/render_loop/render_loop.cpp), well inside lavapipe's loop
+    // budget.
     g_path_log_on = true;
     for (uint s = batch.sample_begin; s < batch.sample_begin + batch.sample_count; ++s) {
         RayCounts rays;

@@ -1,6 +1,6 @@
 // The interface of the viewer's display pass (shaders/display.comp,
-// vulkan_rt/view/progressive_renderer.h): its two storage buffers, its push constants and the byte
-// order of a packed pixel. Shared-header dialect (common/shared/lang.h).
+// vulkan_rt/present/progressive_renderer.h): its two storage buffers, its push constants and the
+// byte order of a packed pixel. Shared-header dialect (common/shared/lang.h).
 #ifndef TP_SHADERS_DISPLAY_INTERFACE_H
 #define TP_SHADERS_DISPLAY_INTERFACE_H
 

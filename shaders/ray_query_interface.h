@@ -1,5 +1,5 @@
 // One ray's answer from the ray-query shaders (closest_hits.comp, closest_hits.rgen) to
-// vulkan_rt/renderer/ray_queries.cpp, which hands it on as render/closest_hits.h's ClosestHits.
+// vulkan_rt/renderer/gpu_ray_queries.cpp, which hands it on as render/closest_hits.h's ClosestHits.
 // Shared-header dialect (common/shared/lang.h).
 #ifndef TP_SHADERS_RAY_QUERY_INTERFACE_H
 #define TP_SHADERS_RAY_QUERY_INTERFACE_H

@@ -11,7 +11,7 @@
 // has one invocation per item, so there is nothing to regenerate and the subgroup votes and the
 // atomic add would only cost: invocation i of n traces items i, i + n, ... to the end
 // (ITEM_SCHEDULE_STRIDED). The host picks the schedule at pipeline creation, a specialization
-// constant, so each device's compiler sees only its loop (vulkan_rt/renderer/item_schedule.h).
+// constant, so each device's compiler sees only its loop (vulkan_rt/render_loop/item_schedule.h).
 //
 // Each item's estimate goes to its slot in the sample buffer, in whatever order the items are
 // traced; the resolve pass (resolve.comp) then sums every pixel's samples in sample order, so

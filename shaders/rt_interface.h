@@ -1,13 +1,13 @@
-// The ray-tracing pipeline's wiring that the host (vulkan_rt/pipeline/rt_program.cpp, which lays
-// out the shader binding table) and the shaders (trace_rtx.glsl and the hit and miss shaders) must
-// agree on: which miss shader a traceRayEXT selects and where each payload lives.
+// The ray-tracing pipeline's wiring that the host (vulkan_rt/pipeline_mode/rt_program.cpp, which
+// lays out the shader binding table) and the shaders (trace_rtx.glsl and the hit and miss shaders)
+// must agree on: which miss shader a traceRayEXT selects and where each payload lives.
 //
 // Shader groups, in pipeline and binding-table order: ray generation; the miss shaders in
 // RT_MISS_* order; the triangle hit group (closest hit only); and, in a pipeline for a scene
-// with exact meshes (vulkan_rt/accel/accel_inputs.h), the procedural hit group (exact_triangle.rint
-// and the same closest hit). Rays add no SBT record offset and stride 0, so an instance's own
-// record offset picks its group: RT_HIT_GROUP_TRIANGLES or RT_HIT_GROUP_EXACT. Shadow rays skip
-// the closest-hit shader, so they need no group of their own.
+// with exact meshes (vulkan_rt/pipeline_mode/accel_inputs.h), the procedural hit group
+// (exact_triangle.rint and the same closest hit). Rays add no SBT record offset and stride 0, so an
+// instance's own record offset picks its group: RT_HIT_GROUP_TRIANGLES or RT_HIT_GROUP_EXACT.
+// Shadow rays skip the closest-hit shader, so they need no group of their own.
 #ifndef TP_SHADERS_RT_INTERFACE_H
 #define TP_SHADERS_RT_INTERFACE_H
 

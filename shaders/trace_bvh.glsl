@@ -1,6 +1,6 @@
 // The compute mode's trace include: ray queries answered by software traversal of the BVH of
-// vulkan_rt/accel/bvh_builder.cpp (node layout: shared/intersect.h). The pipeline mode replaces this
-// file by one that answers the same two calls with traceRayEXT, the way nvpro-samples
+// vulkan_rt/compute_mode/bvh_builder.cpp (node layout: shared/intersect.h). The pipeline mode
+// replaces this file by one that answers the same two calls with traceRayEXT, the way nvpro-samples
 // vk_raytrace swaps traceray_rq.glsl and traceray_rtx.glsl; nothing else in the shaders knows
 // how rays are traced.
 //
@@ -34,8 +34,8 @@
 
 #include "bvh_triangles.glsl"
 
-// The BVH nodes of vulkan_rt/accel/bvh_builder.cpp, read as vec4s (BvhNode: 4 per node) so that
-// every load is one aligned 16-byte transaction.
+// The BVH nodes of vulkan_rt/compute_mode/bvh_builder.cpp, read as vec4s (BvhNode: 4 per node) so
+// that every load is one aligned 16-byte transaction.
 layout(std430, set = 0, binding = BINDING_BVH_NODES) readonly buffer BvhNodeBuffer {
     vec4 bvh_node_words[];
 };

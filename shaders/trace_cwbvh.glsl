@@ -1,7 +1,8 @@
-// The compute mode's trace include for the compressed 8-wide BVH (vulkan_rt/accel/wide_bvh.h, node
-// format: cwbvh.h): the same two calls as trace_bvh.glsl, which it replaces by include
-// (render_compute.comp), answered by the traversal of Ylitie, Karras & Laine, "Efficient
-// Incoherent Ray Traversal on GPUs Through Compressed Wide BVHs", HPG 2017, sec. 4:
+// The compute mode's trace include for the compressed 8-wide BVH (built by
+// vulkan_rt/compute_mode/wide_bvh.h, node format: cwbvh.h): the same two calls as trace_bvh.glsl,
+// which it replaces by include (render_compute.comp), answered by the traversal of Ylitie, Karras
+// & Laine, "Efficient Incoherent Ray Traversal on GPUs Through Compressed Wide BVHs", HPG 2017,
+// sec. 4:
 //
 //   bool trace_closest(Ray ray, out TraceHit hit)  nearest hit in (0, ray.tmax)
 //   bool trace_occluded(Ray ray)                   any hit in (0, ray.tmax)
@@ -48,8 +49,8 @@ const uint CWBVH_ROOT_GROUP = 0x80000000u;
 const float CWBVH_PAD = 1.0f / 1048576.0f;
 
 // The ray's octant code o: bit 2 set for +x, 1 for +y, 0 for +z. The host puts in slot s the
-// child lying in the octant of code s from the node's centre (vulkan_rt/accel/wide_bvh.cpp); a ray
-// meets first the child on the side it comes from, code o ^ 7, for which slot ^ o is 7.
+// child lying in the octant of code s from the node's centre (vulkan_rt/compute_mode/wide_bvh.cpp);
+// a ray meets first the child on the side it comes from, code o ^ 7, for which slot ^ o is 7.
 uint cwbvh_octant(vec3 inv_dir) {
     return (inv_dir.x < 0.0f ? 0u : 4u) | (inv_dir.y < 0.0f ? 0u : 2u) |
            (inv_dir.z < 0.0f ? 0u : 1u);

@@ -1,10 +1,11 @@
 // The pipeline mode's trace include: the same two ray queries as trace_bvh.glsl, answered by
-// traceRayEXT against the top-level acceleration structure (vulkan_rt/accel/accel_structures.cpp),
-// the way nvpro-samples vk_raytrace swaps traceray_rq.glsl for traceray_rtx.glsl. Only the
-// ray-generation shader includes it, so it is the only caller of traceRayEXT: the hit and miss
-// shaders just fill a payload, and the path loop stays one loop in one invocation (recursive
-// tracing from hit shaders would need a stack per bounce and lose the scheduler's freedom;
-// iOrange's rtxON part 2 and the thesis, sec. 4, make the same choice).
+// traceRayEXT against the top-level acceleration structure
+// (vulkan_rt/pipeline_mode/accel_structures.cpp), the way nvpro-samples vk_raytrace swaps
+// traceray_rq.glsl for traceray_rtx.glsl. Only the ray-generation shader includes it, so it is the
+// only caller of traceRayEXT: the hit and miss shaders just fill a payload, and the path loop stays
+// one loop in one invocation (recursive tracing from hit shaders would need a stack per bounce and
+// lose the scheduler's freedom; iOrange's rtxON part 2 and the thesis, sec. 4, make the same
+// choice).
 //
 //   bool trace_closest(Ray ray, out TraceHit hit)  nearest hit in [0, ray.tmax]
 //   bool trace_occluded(Ray ray)                   any hit in [0, ray.tmax]

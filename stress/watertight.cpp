@@ -13,8 +13,8 @@
 #include "cpu_ref/ray_queries.h"
 #include "scene/generators.h"
 #include "scene/load.h"
-#include "vulkan_rt/renderer/ray_queries.h"
-#include "vulkan_rt/renderer/vk_mode.h"
+#include "vulkan_rt/device/vk_mode.h"
+#include "vulkan_rt/renderer/gpu_ray_queries.h"
 
 #include <fmt/format.h>
 

@@ -5,7 +5,7 @@
 
 #include "view/window.h"
 #include "vulkan_rt/device/context.h"
-#include "vulkan_rt/view/presenter.h"
+#include "vulkan_rt/present/presenter.h"
 
 #include <string>
 #include <vector>

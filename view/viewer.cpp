@@ -11,7 +11,7 @@
 #include "view/view_camera.h"
 #include "view/view_input.h"
 #include "view/window.h"
-#include "vulkan_rt/view/presenter.h"
+#include "vulkan_rt/present/presenter.h"
 
 #include <fmt/core.h>
 #include <glm/gtc/constants.hpp>

@@ -7,8 +7,8 @@
 #pragma once
 
 #include "scene/flatten.h"
-#include "vulkan_rt/renderer/vk_mode.h"
-#include "vulkan_rt/view/progressive_renderer.h"
+#include "vulkan_rt/device/vk_mode.h"
+#include "vulkan_rt/present/progressive_renderer.h"
 
 #include <cstdint>
 #include <string>

@@ -8,7 +8,7 @@ vulkan:compute-auto (Mrays/s: every ray over GPU time, best of its rounds). STAT
 SCENE-LAYOUT.json, the `--stats` of one render per scene (its bench name) and layout (binary,
 wide, auto): accel_bytes, and with auto the layout built (extra.bvh_layout) and both layouts'
 estimated work per ray (extra.bvh_estimate, extra.bvh_estimate_binary or _wide: "nodes N boxes
-B triangles T instances I", vulkan_rt/accel/bvh_estimate.h). Prints Markdown.
+B triangles T instances I", vulkan_rt/compute_mode/bvh_estimate.h). Prints Markdown.
 """
 import json
 import os

@@ -1,8 +1,9 @@
 // A mesh vertex placed in world space by its instance, for the one-level acceleration structures
 // that hold world-space triangles instead of instancing an object-space mesh: the CPU engine's
 // Embree scene (cpu_ref/embree_accel.cpp, a mesh that one instance uses) and compute mode's
-// one-level BVH (vulkan_rt/accel/bvh_builder.cpp, a scene without instancing). Both get their
-// vertices here, so that same-seed CPU and compute renders intersect the same float triangles.
+// one-level BVH (vulkan_rt/compute_mode/bvh_builder.cpp, a scene without instancing). Both get
+// their vertices here, so that same-seed CPU and compute renders intersect the same float
+// triangles.
 #pragma once
 
 #include "shared/types.h"

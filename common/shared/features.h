@@ -29,9 +29,9 @@ const uint FEATURE_DIRECTIONAL_LIGHTS = 64u;
 const uint FEATURE_ENV_CONSTANT = 128u; // a constant environment
 const uint FEATURE_ENV_MAP = 256u;      // a lat-long environment map
 // A mesh with more than one instance. Without it compute mode traverses a one-level BVH of
-// world-space triangles (vulkan_rt/accel/bvh_builder.h, shaders/trace_bvh.glsl); the CPU engine
-// places every mesh that one instance uses in world space whatever the mask, and pipeline mode
-// always has its TLAS and BLASes.
+// world-space triangles (vulkan_rt/compute_mode/bvh_builder.h, shaders/trace_bvh.glsl); the CPU
+// engine places every mesh that one instance uses in world space whatever the mask, and pipeline
+// mode always has its TLAS and BLASes.
 const uint FEATURE_INSTANCING = 512u;
 const uint FEATURE_PBR = 1024u;         // glTF's metallic-roughness material (pbr.h)
 const uint FEATURE_NORMAL_MAPS = 2048u; // a material with a normal map (and its tangent frames)

@@ -1,6 +1,6 @@
 // Ray-primitive tests of the compute-mode traversal and the BVH node layout they run on.
-// vulkan_rt/accel/bvh_builder.cpp fills the nodes; shaders/trace_bvh.glsl traverses them; the C++
-// tests call the same functions.
+// vulkan_rt/compute_mode/bvh_builder.cpp fills the nodes; shaders/trace_bvh.glsl traverses them;
+// the C++ tests call the same functions.
 //
 // Node layout (Aila & Laine, "Understanding the Efficiency of Ray Traversal on GPUs", HPG
 // 2009, sec. 3): a binary BVH whose nodes hold the boxes of *both* children, so one 64-byte
@@ -12,8 +12,8 @@
 //   absent             count == 0, ref == BVH_EMPTY (only in the root of a one-leaf tree)
 // Two levels: the top level (over instances, world space) and every mesh's bottom level (object
 // space) live in one node array; MeshInfo::bvh_root is the index of a mesh's root node. One
-// level (a scene without instancing, vulkan_rt/accel/bvh_builder.h): one tree whose leaves hold the
-// triangles of every instance in world space.
+// level (a scene without instancing, vulkan_rt/compute_mode/bvh_builder.h): one tree whose leaves
+// hold the triangles of every instance in world space.
 #ifndef TP_SHARED_INTERSECT_H
 #define TP_SHARED_INTERSECT_H
 

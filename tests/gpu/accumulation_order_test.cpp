@@ -1,6 +1,6 @@
 // A pixel's accumulated sums must not depend on how its samples were split into submissions,
 // nor on which invocation traced which sample: the batch planner follows measured time
-// (vulkan_rt/renderer/batch_planner.h), a launch's invocations take its samples in whatever
+// (vulkan_rt/render_loop/batch_planner.h), a launch's invocations take its samples in whatever
 // order they finish their paths (shaders/render_items.glsl), and lavapipe repeats dispatches cut
 // short by its loop budget, so two renders with one seed see different splits and orders, yet
 // are promised the same bits (the stress suite's position group and `compare --exact` between
@@ -11,8 +11,8 @@
 #include "scene/flatten.h"
 #include "scene/load.h"
 #include "shared/rng.h"
-#include "vulkan_rt/compute/compute_renderer.h"
-#include "vulkan_rt/view/progressive_renderer.h"
+#include "vulkan_rt/compute_mode/compute_renderer.h"
+#include "vulkan_rt/present/progressive_renderer.h"
 
 #include <catch2/catch.hpp>
 

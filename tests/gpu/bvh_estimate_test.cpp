@@ -1,4 +1,4 @@
-// The per-ray work estimate of a compute-mode BVH (vulkan_rt/accel/bvh_estimate.h) against a
+// The per-ray work estimate of a compute-mode BVH (vulkan_rt/compute_mode/bvh_estimate.h) against a
 // Monte Carlo count, and the `--bvh auto` choice that rests on it. The surface area heuristic's
 // A(box) / A(root) is the probability that a uniformly distributed line meeting the root's box
 // also meets a box inside it (Cauchy-Crofton: the measure of the lines meeting a convex body is
@@ -11,8 +11,8 @@
 #include "shared/features.h"
 #include "shared/intersect.h"
 #include "support/test_paths.h"
-#include "vulkan_rt/accel/bvh_builder.h"
-#include "vulkan_rt/accel/bvh_estimate.h"
+#include "vulkan_rt/compute_mode/bvh_builder.h"
+#include "vulkan_rt/compute_mode/bvh_estimate.h"
 
 #include <catch2/catch.hpp>
 

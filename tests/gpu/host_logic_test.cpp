@@ -9,12 +9,12 @@
 #include "shared/intersect.h"
 #include "shared/surface.h"
 #include "util/error.h"
-#include "vulkan_rt/accel/bvh_builder.h"
+#include "vulkan_rt/compute_mode/bvh_builder.h"
 #include "vulkan_rt/device/device_info.h"
 #include "vulkan_rt/device/vk_error.h"
-#include "vulkan_rt/renderer/batch_planner.h"
-#include "vulkan_rt/renderer/batch_session.h"
-#include "vulkan_rt/renderer/item_schedule.h"
+#include "vulkan_rt/render_loop/batch_planner.h"
+#include "vulkan_rt/render_loop/batch_session.h"
+#include "vulkan_rt/render_loop/item_schedule.h"
 
 #include <catch2/catch.hpp>
 #include <glm/gtc/matrix_transform.hpp>

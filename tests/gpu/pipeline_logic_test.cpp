@@ -8,10 +8,10 @@
 #include "shaders/rt_interface.h"
 #include "shared/surface.h"
 #include "util/error.h"
-#include "vulkan_rt/accel/accel_inputs.h"
 #include "vulkan_rt/device/device_info.h"
-#include "vulkan_rt/pipeline/sbt_layout.h"
-#include "vulkan_rt/renderer/vk_mode.h"
+#include "vulkan_rt/device/vk_mode.h"
+#include "vulkan_rt/pipeline_mode/accel_inputs.h"
+#include "vulkan_rt/pipeline_mode/sbt_layout.h"
 #include "vulkan_rt/renderer/vulkan_renderer.h"
 
 #include <catch2/catch.hpp>

@@ -160,10 +160,10 @@ TEST_CASE("with the same seed both backends trace the same paths", "[gpu]") {
 }
 
 TEST_CASE("the wide BVH traces the CPU's paths and its images are consistent", "[gpu]") {
-    // --bvh wide (vulkan_rt/accel/wide_bvh.h): the same-seed replay of the test above, and an
-    // independent-seed comparison as in the first test, on cornell (one-level BVH), spheres
-    // (two levels) and cornell_spheres (its glass and mirror spheres: the longest paths); and
-    // --bvh auto (vulkan_rt/accel/bvh_estimate.h), which today picks wide on cornell and
+    // --bvh wide (vulkan_rt/compute_mode/wide_bvh.h): the same-seed replay of the test above, and
+    // an independent-seed comparison as in the first test, on cornell (one-level BVH), spheres (two
+    // levels) and cornell_spheres (its glass and mirror spheres: the longest paths); and
+    // --bvh auto (vulkan_rt/compute_mode/bvh_estimate.h), which today picks wide on cornell and
     // cornell_spheres and binary on spheres, so that both of its outcomes run.
     for (const char* scene : {"cornell", "spheres", "cornell_spheres"}) {
         SECTION(scene) {

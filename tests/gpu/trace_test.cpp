@@ -1,8 +1,8 @@
-// The compute mode's ray queries (vulkan_rt/renderer/ray_queries.h: the BVH built by
-// vulkan_rt/accel/bvh_builder.cpp, traversed by shaders/trace_bvh.glsl, or in the compressed 8-wide
-// layout by shaders/trace_cwbvh.glsl) against Embree's on the same scenes: every bundled scene
-// and a generated one with hundreds of instances, each in both layouts and with both shapes of
-// the BVH: two levels (the all-features shader) and one level (the shader specialized to a mask
+// The compute mode's ray queries (vulkan_rt/renderer/gpu_ray_queries.h: the BVH built by
+// vulkan_rt/compute_mode/bvh_builder.cpp, traversed by shaders/trace_bvh.glsl, or in the compressed
+// 8-wide layout by shaders/trace_cwbvh.glsl) against Embree's on the same scenes: every bundled
+// scene and a generated one with hundreds of instances, each in both layouts and with both shapes
+// of the BVH: two levels (the all-features shader) and one level (the shader specialized to a mask
 // without instancing, which the builder then gives one world-space tree). Closest hit
 // (instance, primitive, distance, barycentrics) and occlusion must agree for random rays. Rays
 // that meet two surfaces at the same distance (coplanar faces, a shared edge) may name either:
@@ -20,8 +20,8 @@
 #include "shared/features.h"
 #include "shared/intersect.h"
 #include "shared/surface.h"
-#include "vulkan_rt/accel/bvh_builder.h"
-#include "vulkan_rt/renderer/ray_queries.h"
+#include "vulkan_rt/compute_mode/bvh_builder.h"
+#include "vulkan_rt/renderer/gpu_ray_queries.h"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>

@@ -1,5 +1,5 @@
-// The compressed 8-wide BVH (vulkan_rt/accel/wide_bvh.h) as the host builds it, checked node by
-// node against the triangles it holds: every slot's decoded box p + 2^(e - 127) q, in exact
+// The compressed 8-wide BVH (vulkan_rt/compute_mode/wide_bvh.h) as the host builds it, checked node
+// by node against the triangles it holds: every slot's decoded box p + 2^(e - 127) q, in exact
 // arithmetic, contains the exact bounds of everything below that slot (the quantization must
 // round outward: a box that cut off a sliver of a triangle would lose hits), every triangle is
 // reached exactly once, its record holds the binary layout's floats for the primitive and
@@ -13,7 +13,7 @@
 #include "shared/features.h"
 #include "shared/surface.h"
 #include "support/test_paths.h"
-#include "vulkan_rt/accel/bvh_builder.h"
+#include "vulkan_rt/compute_mode/bvh_builder.h"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>

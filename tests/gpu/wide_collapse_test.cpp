@@ -1,12 +1,13 @@
-// The SAH-optimal collapse of a binary BVH into an 8-wide one (vulkan_rt/accel/wide_collapse.h,
-// Ylitie, Karras & Laine, HPG 2017, sec. 3) against an exhaustive search: on random binary
-// trees, the least cost over every wide tree whose nodes are unions of binary subtrees (every
-// choice of up to 8 slot roots below each node, each a leaf of at most max_leaf items or a node
-// of its own) must equal the cost the dynamic program reports, and the tree it returns must
-// have that cost when evaluated from its boxes, hold every item once in leaves of at most
-// max_leaf, and give each slot the box of its binary subtree. Host only: no device needed.
+// The SAH-optimal collapse of a binary BVH into an 8-wide one
+// (vulkan_rt/compute_mode/wide_collapse.h, Ylitie, Karras & Laine, HPG 2017, sec. 3) against an
+// exhaustive search: on random binary trees, the least cost over every wide tree whose nodes are
+// unions of binary subtrees (every choice of up to 8 slot roots below each node, each a leaf of at
+// most max_leaf items or a node of its own) must equal the cost the dynamic program reports, and
+// the tree it returns must have that cost when evaluated from its boxes, hold every item once in
+// leaves of at most max_leaf, and give each slot the box of its binary subtree. Host only: no
+// device needed.
 #include "shaders/cwbvh.h"
-#include "vulkan_rt/accel/wide_collapse.h"
+#include "vulkan_rt/compute_mode/wide_collapse.h"
 
 #include <catch2/catch.hpp>
 

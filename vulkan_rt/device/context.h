@@ -16,8 +16,8 @@
 
 namespace tp {
 
-// What a window needs from the context (vulkan_rt/view/presenter.h): the instance extensions of its
-// window system (GLFW's glfwGetRequiredInstanceExtensions) and the function that creates its
+// What a window needs from the context (vulkan_rt/present/presenter.h): the instance extensions of
+// its window system (GLFW's glfwGetRequiredInstanceExtensions) and the function that creates its
 // surface on the instance. The context then opens a queue that can also draw and present there,
 // with VK_KHR_swapchain, and owns the surface.
 struct PresentationRequest {

@@ -3,7 +3,7 @@
 // device_query.cpp; everything here is plain data and pure functions (unit tested).
 #pragma once
 
-#include "vulkan_rt/renderer/vk_mode.h"
+#include "vulkan_rt/device/vk_mode.h"
 
 #include <cstdint>
 #include <string>

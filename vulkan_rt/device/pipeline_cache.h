@@ -1,6 +1,7 @@
-// Pipelines compiled once per feature set (issue 9): a VkPipelineCache kept on disk, one file
-// per shader module set, so that the second render of a scene (or of another scene with the
-// same features) skips the driver's compilation of the specialized pipeline.
+// Pipelines compiled once per feature set (scene features: docs/gpu.md, "Specialization to the
+// scene's features", "Pipeline cache"): a VkPipelineCache kept on disk, one file per shader
+// module set, so that the second render of a scene (or of another scene with the same features)
+// skips the driver's compilation of the specialized pipeline.
 //
 // Where: $TWINPATH_CACHE/pipelines, else $XDG_CACHE_HOME/twinpath/pipelines, else
 // ~/.cache/twinpath/pipelines (the directory of the bench references). File name: a hash of the

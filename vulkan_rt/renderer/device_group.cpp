@@ -1,10 +1,10 @@
 #include "vulkan_rt/renderer/device_group.h"
 
 #include "util/error.h"
-#include "vulkan_rt/compute/compute_renderer.h"
+#include "vulkan_rt/compute_mode/compute_renderer.h"
 #include "vulkan_rt/device/context.h"
 #include "vulkan_rt/device/device_info.h"
-#include "vulkan_rt/pipeline/pipeline_renderer.h"
+#include "vulkan_rt/pipeline_mode/pipeline_renderer.h"
 #include "vulkan_rt/renderer/sample_share.h"
 
 #include <fmt/core.h>

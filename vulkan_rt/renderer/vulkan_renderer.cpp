@@ -2,10 +2,10 @@
 
 #include "scene/features.h"
 #include "util/error.h"
-#include "vulkan_rt/compute/compute_renderer.h"
+#include "vulkan_rt/compute_mode/compute_renderer.h"
 #include "vulkan_rt/device/context.h"
 #include "vulkan_rt/device/pipeline_report.h"
-#include "vulkan_rt/pipeline/pipeline_renderer.h"
+#include "vulkan_rt/pipeline_mode/pipeline_renderer.h"
 #include "vulkan_rt/renderer/device_group.h"
 
 #include <fmt/core.h>

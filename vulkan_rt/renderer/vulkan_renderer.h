@@ -3,9 +3,9 @@
 
 #include "render/render_options.h"
 #include "scene/flatten.h"
-#include "vulkan_rt/accel/bvh_builder.h"
+#include "vulkan_rt/compute_mode/bvh_builder.h"
 #include "vulkan_rt/device/device_info.h"
-#include "vulkan_rt/renderer/vk_mode.h"
+#include "vulkan_rt/device/vk_mode.h"
 
 #include <optional>
 
@@ -19,8 +19,10 @@ struct VulkanOptions {
     // list: several devices at once (device_group.h).
     std::string device;
     VkModeRequest mode; // --vk-mode; none: auto (resolve_vk_mode)
-    // --bvh: compute mode's BVH layout (bvh_builder.h). The default is the one that traced
-    // faster on every scene measured (BENCHMARKS.md, "h200-wide-bvh").
+    // --bvh: compute mode's BVH layout (compute_mode/bvh_builder.h). The default is binary
+    // because wide, and auto's per-scene choice, are not yet at least as fast on every scene
+    // (docs/gpu.md, "Why --bvh defaults to binary"; the figures: BENCHMARKS.md, sections
+    // "h200-wide-bvh" and "h200-wide-auto").
     BvhLayout bvh = BvhLayout::binary;
     // --pipeline-stats: the driver's statistics of the render pipeline in RenderStats::pipeline
     // (pipeline_report.h); on a device without them a note on stderr, once per device opened.
