@@ -1,18 +1,21 @@
 // twinpath info [--json]: what this build can do and which devices it sees.
 // twinpath info SCENE [--json]: what the scene holds and which features it uses (the
 // scene features the renderers specialize their path loop to, docs/gpu.md), each material as the
-// engines see it and, for glTF, what the file gives that is not rendered (docs/scene-format.md),
-// and the load time.
+// engines see it with its texture slots, each explicit light (for glTF also in the file's
+// photometric units), and, for glTF, what the file gives that a path tracer ignores and what is
+// not rendered (docs/scene-format.md), and the load time.
 #include "commands.h"
 
 #include "scene/features.h"
 #include "scene/flatten.h"
+#include "scene/gltf_loader.h"
 #include "scene/load.h"
 #include "shared/math.h"
 #include "util/error.h"
 #include "vulkan_rt/renderer/vulkan_renderer.h"
 
 #include <chrono>
+#include <filesystem>
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
 
@@ -47,25 +50,160 @@ nlohmann::json vulkan_json() {
     return v;
 }
 
-// What a material is, as the engines see it: "phong Kd (0.5, 0.5, 0.5) Ks (0.04, ...) Ns 7.5".
-std::string describe(const Material& m, const Scene& scene) {
-    auto rgb = [](const vec3& c) { return fmt::format("({:.4g}, {:.4g}, {:.4g})", c.x, c.y, c.z); };
+std::string rgb(const vec3& c) {
+    return fmt::format("({:.4g}, {:.4g}, {:.4g})", c.x, c.y, c.z);
+}
+
+// What a material is, as the engines see it: "phong Kd (0.5, 0.5, 0.5) Ks (0.04, ...) Ns 7.5",
+// "pbr base colour (0.8, 0.8, 0.8) metallic 0 roughness 0.5 ior 1.5 ...".
+std::string describe(const Material& m) {
     std::string s;
     if (m.type == MATERIAL_MIRROR) s = "mirror Ks " + rgb(m.ks);
     if (m.type == MATERIAL_DIELECTRIC)
         s = fmt::format("dielectric Ni {:.4g} Tf {}", m.ior, rgb(m.tf));
     if (m.type == MATERIAL_PHONG) {
         s = "phong Kd " + rgb(m.kd);
-        if (m.kd_texture != NO_TEXTURE)
-            s += fmt::format(" x texture '{}'", scene.textures[size_t(m.kd_texture)].name);
         if (!is_black(m.ks)) s += fmt::format(" Ks {} Ns {:.4g}", rgb(m.ks), m.ns);
+    }
+    if (m.type == MATERIAL_PBR) {
+        s = fmt::format("pbr base colour {} metallic {:.4g} roughness {:.4g} ior {:.4g} "
+                        "transmission {:.4g} specular {:.4g} specular colour {}",
+                        rgb(m.kd), m.metallic, m.roughness, m.ior, m.transmission, m.specular,
+                        rgb(m.ks));
+        if ((m.flags & MATERIAL_FLAG_VOLUME) == 0u)
+            s += " thin";
+        else if (m.attenuation_distance < FLOAT_MAX)
+            s += fmt::format(" volume (attenuation colour {} at {:.4g} m)", rgb(m.tf),
+                             m.attenuation_distance);
+        else
+            s += " volume (no attenuation)";
+        if (m.alpha_mode == ALPHA_OPAQUE) s += " opaque";
+        if (m.alpha_mode == ALPHA_MASK)
+            s += fmt::format(" alpha mask (alpha {:.4g}, cutoff {:.4g})", m.alpha, m.alpha_cutoff);
+        if (m.alpha_mode == ALPHA_BLEND) s += fmt::format(" alpha blend (alpha {:.4g})", m.alpha);
+        if (m.normal_texture != NO_TEXTURE)
+            s += fmt::format(" normal scale {:.4g}", m.normal_scale);
     }
     if (!is_black(m.ke)) s += " Ke " + rgb(m.ke);
     return s;
 }
 
+const char* wrap_name(uint32_t wrap) {
+    return wrap == SLOT_WRAP_CLAMP ? "clamp" : wrap == SLOT_WRAP_MIRROR ? "mirror" : "repeat";
+}
+
+// A texture slot of a material as JSON: what reads it, the image, the uv set, the sampler and
+// the map from uv to image coordinates.
+nlohmann::json slot_json(const char* use, int slot, const Scene& scene) {
+    const TextureSlot& ts = scene.texture_slots[size_t(slot)];
+    const Texture& image = scene.textures[ts.image];
+    nlohmann::json j = {{"slot", use},
+                        {"image", image.name},
+                        {"width", image.width},
+                        {"height", image.height},
+                        {"uv_set", (ts.sampling & SLOT_UV1) != 0u ? 1 : 0},
+                        {"wrap_s", wrap_name(ts.sampling & 3u)},
+                        {"wrap_t", wrap_name((ts.sampling >> SLOT_WRAP_T_SHIFT) & 3u)},
+                        {"filter", (ts.sampling & SLOT_NEAREST) != 0u ? "nearest" : "bilinear"},
+                        {"srgb", (ts.sampling & SLOT_SRGB) != 0u}};
+    const vec3 s = ts.transform_s, t = ts.transform_t;
+    if (s != vec3(1.0f, 0.0f, 0.0f) || t != vec3(0.0f, 1.0f, 0.0f))
+        j["transform"] = {{s.x, s.y, s.z}, {t.x, t.y, t.z}};
+    return j;
+}
+
+// "'wood.png' 512x512, uv 0, repeat/clamp, bilinear, sRGB, s = 2 u + 0.25, t = v"
+std::string slot_text(const nlohmann::json& j) {
+    std::string s =
+        fmt::format("'{}' {}x{}, uv {}, {}/{}, {}{}", j["image"].get<std::string>(),
+                    j["width"].get<uint32_t>(), j["height"].get<uint32_t>(), j["uv_set"].get<int>(),
+                    j["wrap_s"].get<std::string>(), j["wrap_t"].get<std::string>(),
+                    j["filter"].get<std::string>(), j["srgb"].get<bool>() ? ", sRGB" : ", linear");
+    if (j.contains("transform")) {
+        const auto row = [](const nlohmann::json& r) {
+            return fmt::format("{:.4g} u + {:.4g} v + {:.4g}", r[0].get<float>(), r[1].get<float>(),
+                               r[2].get<float>());
+        };
+        s += ", s = " + row(j["transform"][0]) + ", t = " + row(j["transform"][1]);
+    }
+    return s;
+}
+
+nlohmann::json material_textures(const Material& m, const Scene& scene) {
+    const std::pair<const char*, int> slots[] = {
+        {m.type == MATERIAL_PBR ? "base colour" : "Kd", m.kd_texture},
+        {"metallic-roughness", m.metallic_roughness_texture},
+        {"normal", m.normal_texture},
+        {"emissive", m.emissive_texture},
+        {"transmission", m.transmission_texture},
+        {"specular", m.specular_texture},
+        {"specular colour", m.specular_color_texture}};
+    nlohmann::json list = nlohmann::json::array();
+    for (const auto& [use, slot] : slots)
+        if (slot != NO_TEXTURE && (m.type == MATERIAL_PBR || slot == m.kd_texture))
+            list.push_back(slot_json(use, slot, scene));
+    return list;
+}
+
+bool is_gltf(const std::string& path) {
+    const std::string ext = std::filesystem::path(path).extension().string();
+    return ext == ".gltf" || ext == ".glb";
+}
+
+// An explicit light in twinpath's units and, for glTF, in the file's (candela or lux,
+// scene/gltf_loader.h).
+nlohmann::json light_json(const LightDesc& l, bool gltf) {
+    const bool directional = l.type == LIGHT_DIRECTIONAL;
+    nlohmann::json j = {{"type", directional            ? "directional"
+                                 : l.type == LIGHT_SPOT ? "spot"
+                                                        : "point"},
+                        {"value", {l.value.x, l.value.y, l.value.z}},
+                        {"unit", directional ? "W/m^2" : "W/sr"}};
+    if (gltf) {
+        const glm::dvec3 v = glm::dvec3(l.value) * kGltfLumensPerWatt;
+        j["file_value"] = {v.x, v.y, v.z};
+        j["file_unit"] = directional ? "lx" : "cd";
+    }
+    if (directional)
+        j["direction"] = {l.direction.x, l.direction.y, l.direction.z}; // towards the light
+    else
+        j["position"] = {l.position.x, l.position.y, l.position.z};
+    if (l.type == LIGHT_SPOT) {
+        j["direction"] = {l.direction.x, l.direction.y, l.direction.z}; // along the axis
+        j["inner_cone_degrees"] = glm::degrees(double(l.inner_cone));
+        j["outer_cone_degrees"] = glm::degrees(double(l.outer_cone));
+    }
+    return j;
+}
+
+std::string triple(const nlohmann::json& v) {
+    return fmt::format("({:.4g}, {:.4g}, {:.4g})", v[0].get<double>(), v[1].get<double>(),
+                       v[2].get<double>());
+}
+
+std::string light_text(const nlohmann::json& l) {
+    const std::string type = l["type"];
+    std::string s = type + " " +
+                    (type == "directional" ? "towards " + triple(l["direction"])
+                                           : "at " + triple(l["position"])) +
+                    ": " + triple(l["value"]) + " " + l["unit"].get<std::string>();
+    if (l.contains("file_value"))
+        s += fmt::format(" ({} {} in the file)", triple(l["file_value"]),
+                         l["file_unit"].get<std::string>());
+    if (type == "spot")
+        s += fmt::format(", shining along {}, cone {:.4g} to {:.4g} degrees",
+                         triple(l["direction"]), l["inner_cone_degrees"].get<double>(),
+                         l["outer_cone_degrees"].get<double>());
+    return s;
+}
+
+// The list `i` of a per-material list of lists that may be empty.
+std::vector<std::string> of_material(const std::vector<std::vector<std::string>>& lists, size_t i) {
+    return i < lists.size() ? lists[i] : std::vector<std::string>{};
+}
+
 // The scene's size, lights and features, its materials and what its file gave that is not
-// rendered (glTF).
+// rendered or that a path tracer ignores (glTF).
 int scene_info(const std::string& path, bool json_out) {
     std::vector<std::string> warnings;
     const auto t0 = std::chrono::steady_clock::now();
@@ -89,12 +227,17 @@ int scene_info(const std::string& path, bool json_out) {
     j["feature_mask"] = features.mask;
     j["material_list"] = nlohmann::json::array();
     for (size_t i = 0; i < scene.materials.size(); ++i) {
-        nlohmann::json m = {{"name", scene.material_names[i]},
-                            {"became", describe(scene.materials[i], scene)}};
-        m["dropped"] = i < scene.material_dropped.size() ? scene.material_dropped[i]
-                                                         : std::vector<std::string>{};
+        const Material& mat = scene.materials[i];
+        nlohmann::json m = {{"name", scene.material_names[i]}, {"became", describe(mat)}};
+        m["textures"] = material_textures(mat, scene);
+        m["ignored"] = of_material(scene.material_ignored, i);
+        m["dropped"] = of_material(scene.material_dropped, i);
         j["material_list"].push_back(m);
     }
+    j["light_list"] = nlohmann::json::array();
+    for (const LightDesc& l : scene.lights)
+        j["light_list"].push_back(light_json(l, is_gltf(scene.path)));
+    j["ignored"] = scene.ignored;
     j["dropped"] = scene.dropped;
     j["load_seconds"] = load_seconds; // reading the file into the scene model
     if (json_out) {
@@ -112,9 +255,15 @@ int scene_info(const std::string& path, bool json_out) {
     fmt::print("  materials:\n");
     for (const nlohmann::json& m : j["material_list"]) {
         fmt::print("    {}: {}\n", m["name"].get<std::string>(), m["became"].get<std::string>());
+        for (const auto& t : m["textures"])
+            fmt::print("      {} texture: {}\n", t["slot"].get<std::string>(), slot_text(t));
+        for (const auto& d : m["ignored"]) fmt::print("      {}\n", d.get<std::string>());
         for (const auto& d : m["dropped"])
             fmt::print("      not rendered: {}\n", d.get<std::string>());
     }
+    if (!j["light_list"].empty()) fmt::print("  lights:\n");
+    for (const nlohmann::json& l : j["light_list"]) fmt::print("    {}\n", light_text(l));
+    for (const std::string& d : scene.ignored) fmt::print("  {}\n", d);
     for (const std::string& d : scene.dropped) fmt::print("  not rendered: {}\n", d);
     return 0;
 }

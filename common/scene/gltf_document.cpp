@@ -181,14 +181,18 @@ GltfTextureRef read_texture_ref(const Reader& r, const json& j, const std::strin
             rotation = r.number(*a, Reader::at(f, "rotation"));
         if (const json* tc = Reader::find(*x, "texCoord"))
             t.tex_coord = uint32_t(r.integer(*tc, Reader::at(f, "texCoord"), 0, 1u << 30));
-        // The extension's matrix, translation * rotation * scale, column by column as its
-        // GLSL listing gives it (KHR_texture_transform, "Overview").
+        // The extension's matrix, translation * rotation * scale (KHR_texture_transform,
+        // "Overview"), with the rotation (u, v) -> (c u + s v, -s u + c v): counter-clockwise
+        // in glTF's uv space, whose v points down. The extension's GLSL listing writes that
+        // rotation transposed; its own example (offset (0, 1), rotation pi/2, scale 0.5: the
+        // image's lower-left quadrant), its sample model TextureTransformTest and the
+        // implementations (Khronos' glTF-Sample-Viewer, three.js, Babylon.js, Blender) all
+        // rotate this way. Column by column, as glm stores it.
         const double c = std::cos(rotation), s = std::sin(rotation);
         const glm::dmat3 T(1, 0, 0, 0, 1, 0, offset.x, offset.y, 1);
-        const glm::dmat3 R(c, s, 0, -s, c, 0, 0, 0, 1);
+        const glm::dmat3 R(c, -s, 0, s, c, 0, 0, 0, 1);
         const glm::dmat3 S(scale.x, 0, 0, 0, scale.y, 0, 0, 0, 1);
         t.transform = T * R * S;
-        t.transformed = true;
     }
     return t;
 }

@@ -87,7 +87,6 @@ struct GltfSampler {
 struct GltfTextureRef {
     int texture = GLTF_NONE;
     uint32_t tex_coord = 0; // KHR_texture_transform's texCoord where it gives one
-    bool transformed = false;
     glm::dmat3 transform{1.0}; // uv -> uv: T(offset) R(rotation) S(scale), as the extension
     std::string field;         // where it was given: "materials[2].emissiveTexture"
 };

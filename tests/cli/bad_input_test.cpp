@@ -155,6 +155,21 @@ TEST_CASE("bad JSON scenes are rejected with file and field", "[cli][bad-input]"
          "bad.json",
          "",
          {"bad.json", "materials.m.type", "velvet"}},
+        {"pbr roughness above 1",
+         {{"bad.json", with_material(R"({"type": "pbr", "roughness": 1.2, "Ke": [1, 1, 1]})")}},
+         "bad.json",
+         "",
+         {"bad.json", "materials.m.roughness", "[0, 1]"}},
+        {"pbr alpha mode misspelt",
+         {{"bad.json", with_material(R"({"type": "pbr", "alpha_mode": "MASK"})")}},
+         "bad.json",
+         "",
+         {"bad.json", "materials.m.alpha_mode", "MASK"}},
+        {"pbr normal texture naming no texture",
+         {{"bad.json", with_material(R"({"type": "pbr", "normal_texture": "bumps"})")}},
+         "bad.json",
+         "",
+         {"bad.json", "materials.m.normal_texture", "bumps"}},
         {"negative Kd",
          {{"bad.json", with_material(R"({"Kd": [-0.1, 0.5, 0.5]})")}},
          "bad.json",
@@ -557,15 +572,29 @@ TEST_CASE("bad glTF files are rejected with file and field", "[cli][bad-input][g
          "bad.gltf",
          "",
          {"bad.gltf", "nodes[0]", "cycle"}},
-        {"a spot light",
+        {"a spot light whose inner cone is not inside its outer cone",
          gltf_with([](tp::test::GltfBuilder& g) {
              g.doc["extensions"]["KHR_lights_punctual"]["lights"] = {
-                 {{"type", "spot"}, {"name", "desk lamp"}, {"spot", json::object()}}};
+                 {{"type", "spot"}, {"spot", {{"innerConeAngle", 0.6}, {"outerConeAngle", 0.4}}}}};
              g.doc["nodes"][0]["extensions"]["KHR_lights_punctual"]["light"] = 0;
          }),
          "bad.gltf",
          "",
-         {"bad.gltf", "KHR_lights_punctual.lights[0]", "desk lamp", "spot"}},
+         {"bad.gltf", "KHR_lights_punctual.lights[0].spot.innerConeAngle", "outerConeAngle"}},
+        {"a roughness above 1",
+         gltf_with([](tp::test::GltfBuilder& g) {
+             g.doc["materials"][0]["pbrMetallicRoughness"] = {{"roughnessFactor", 1.5}};
+         }),
+         "bad.gltf",
+         "",
+         {"bad.gltf", "materials[0].pbrMetallicRoughness.roughnessFactor", "[0, 1]"}},
+        {"a texture index naming no texture",
+         gltf_with([](tp::test::GltfBuilder& g) {
+             g.doc["materials"][0]["normalTexture"] = {{"index", 3}};
+         }),
+         "bad.gltf",
+         "",
+         {"bad.gltf", "materials[0].normalTexture.index", "textures"}},
         {"glTF 1.0",
          gltf_with([](tp::test::GltfBuilder& g) { g.doc["asset"]["version"] = "1.0"; }),
          "bad.gltf",

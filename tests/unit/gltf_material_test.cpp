@@ -1,26 +1,20 @@
-// The glTF material mapping (scene/gltf_material.h, docs/scene-format.md "glTF materials") as a
-// table: each row a glTF material and the twinpath material the rule gives, the expected values
-// worked out by hand from the rule's formulas; the Phong exponent against Walter et al.'s
-// relation and the lobe widths it is meant to match; energy conservation over a grid.
+// The glTF material mapping (scene/gltf_material.h, docs/scene-format.md "glTF materials"):
+// every factor of the metallic-roughness model and of KHR_materials_emissive_strength, _ior,
+// _specular, _transmission and _volume lands, unchanged, in its MATERIAL_PBR field; the texture
+// uses and their colour spaces; what is ignored or dropped; and every material in range
+// passing validate_material.
 #include "scene/gltf_material.h"
 #include "scene/scene.h"
+#include "shared/math.h"
 
 #include <catch2/catch.hpp>
 
-#include <cmath>
+#include <limits>
 
 using tp::GltfMaterial;
 using tp::vec3;
 
 namespace {
-
-GltfMaterial pbr(vec3 base, float metallic, float roughness) {
-    GltfMaterial m;
-    m.base_color = base;
-    m.metallic = metallic;
-    m.roughness = roughness;
-    return m;
-}
 
 bool mentions(const std::vector<std::string>& notes, const std::string& s) {
     for (const std::string& n : notes)
@@ -28,152 +22,172 @@ bool mentions(const std::vector<std::string>& notes, const std::string& s) {
     return false;
 }
 
-// Float rounding of the rule's few products: a relative 1e-6.
-void check_near(vec3 a, vec3 b) {
-    for (int c = 0; c < 3; ++c) CHECK(a[c] == Approx(b[c]).epsilon(1e-6).margin(1e-7));
-}
-
 } // namespace
 
-TEST_CASE("glTF material mapping table", "[unit][gltf]") {
-    const vec3 one(1.0f), none(1.0f); // no emissive texture: its mean is 1
-    SECTION("the specification's default material: metallic 1, roughness 1, white") {
-        const auto r = tp::map_gltf_material(GltfMaterial{}, none);
-        CHECK(r.material.type == tp::MATERIAL_PHONG);
-        check_near(r.material.kd, vec3(0.0f));
-        check_near(r.material.ks, one);
-        CHECK(r.material.ns == 0.0f);
-        CHECK(r.dropped.empty());
+TEST_CASE("glTF's default material is the PBR default", "[unit][gltf]") {
+    const auto r = tp::map_gltf_material(GltfMaterial{});
+    const tp::Material& m = r.material;
+    CHECK(m.type == tp::MATERIAL_PBR);
+    CHECK(m.kd == vec3(1.0f));
+    CHECK(m.alpha == 1.0f);
+    CHECK(m.metallic == 1.0f);
+    CHECK(m.roughness == 1.0f);
+    CHECK(m.ke == vec3(0.0f));
+    CHECK(m.ior == 1.5f);
+    CHECK(m.specular == 1.0f);
+    CHECK(m.ks == vec3(1.0f));
+    CHECK(m.transmission == 0.0f);
+    CHECK(m.flags == 0u); // thin-walled
+    CHECK(m.tf == vec3(1.0f));
+    CHECK(m.attenuation_distance == tp::FLOAT_MAX);
+    CHECK(m.alpha_mode == tp::ALPHA_OPAQUE);
+    CHECK(m.alpha_cutoff == 0.5f);
+    CHECK(m.normal_scale == 1.0f);
+    for (int tp::Material::*slot :
+         {&tp::Material::kd_texture, &tp::Material::metallic_roughness_texture,
+          &tp::Material::normal_texture, &tp::Material::emissive_texture,
+          &tp::Material::transmission_texture, &tp::Material::specular_texture,
+          &tp::Material::specular_color_texture})
+        CHECK(m.*slot == tp::NO_TEXTURE);
+    CHECK(r.dropped.empty());
+    CHECK(r.ignored.empty());
+    CHECK(tp::gltf_material_textures(GltfMaterial{}).empty());
+}
+
+TEST_CASE("every glTF factor lands in its MATERIAL_PBR field", "[unit][gltf]") {
+    GltfMaterial g;
+    g.base_color = vec3(0.8f, 0.6f, 0.4f);
+    g.base_alpha = 0.7f;
+    g.metallic = 0.25f;
+    g.roughness = 0.35f;
+    g.emissive = vec3(1.0f, 0.5f, 0.25f);
+    g.emissive_strength = 4.0f;
+    g.ior = 1.33f;
+    g.specular = 0.45f;
+    g.specular_color = vec3(2.0f, 1.0f, 0.5f);
+    g.transmission = 0.9f;
+    g.thickness = 0.02f;
+    g.attenuation_color = vec3(0.9f, 0.5f, 0.1f);
+    g.attenuation_distance = 0.3f;
+    g.alpha_mode = "MASK";
+    g.alpha_cutoff = 0.6f;
+    g.normal_scale = -0.75f;
+    const auto r = tp::map_gltf_material(g);
+    const tp::Material& m = r.material;
+    CHECK(m.type == tp::MATERIAL_PBR);
+    CHECK(m.kd == vec3(0.8f, 0.6f, 0.4f));
+    CHECK(m.alpha == 0.7f);
+    CHECK(m.metallic == 0.25f);
+    CHECK(m.roughness == 0.35f);
+    CHECK(m.ke == vec3(4.0f, 2.0f, 1.0f)); // emissiveFactor x emissiveStrength
+    CHECK(m.ior == 1.33f);
+    CHECK(m.specular == 0.45f);
+    CHECK(m.ks == vec3(2.0f, 1.0f, 0.5f));
+    CHECK(m.transmission == 0.9f);
+    CHECK(m.flags == tp::MATERIAL_FLAG_VOLUME); // thickness > 0
+    CHECK(m.tf == vec3(0.9f, 0.5f, 0.1f));
+    CHECK(m.attenuation_distance == 0.3f);
+    CHECK(m.alpha_mode == tp::ALPHA_MASK);
+    CHECK(m.alpha_cutoff == 0.6f);
+    CHECK(m.normal_scale == -0.75f);
+    CHECK(r.dropped.empty());
+    CHECK_NOTHROW(tp::validate_material(m, "all factors"));
+
+    g.alpha_mode = "BLEND";
+    g.thickness = 0.0f;
+    CHECK(tp::map_gltf_material(g).material.alpha_mode == tp::ALPHA_BLEND);
+    CHECK(tp::map_gltf_material(g).material.flags == 0u);
+}
+
+TEST_CASE("glTF material corner cases map exactly", "[unit][gltf]") {
+    SECTION("KHR_materials_ior's ior 0 is an infinite index: f0 within 4e-6 of 1") {
+        GltfMaterial g;
+        g.ior = 0.0f;
+        const float ior = tp::map_gltf_material(g).material.ior;
+        CHECK(ior == tp::kGltfInfiniteIor);
+        const double f = (double(ior) - 1.0) / (double(ior) + 1.0);
+        CHECK(f * f > 1.0 - 4e-6);
     }
-    SECTION("a dielectric (plastic): F0 = 0.04 at ior 1.5 over a diffuse base of 0.96") {
-        const auto r = tp::map_gltf_material(pbr(vec3(0.8f, 0.2f, 0.1f), 0.0f, 0.5f), none);
-        CHECK(r.material.type == tp::MATERIAL_PHONG);
-        check_near(r.material.kd, vec3(0.768f, 0.192f, 0.096f));
-        check_near(r.material.ks, vec3(0.04f));
-        CHECK(r.material.ns == Approx(7.5)); // 1 / (2 * 0.5^4) - 1/2
+    SECTION("alphaCutoff above 1 masks everything out: alpha 0 below cutoff 1") {
+        GltfMaterial g;
+        g.alpha_mode = "MASK";
+        g.alpha_cutoff = 1.5f;
+        const tp::Material m = tp::map_gltf_material(g).material;
+        CHECK(m.alpha_cutoff == 1.0f);
+        CHECK(m.alpha == 0.0f);
+        CHECK_NOTHROW(tp::validate_material(m, "cutoff"));
+        g.alpha_mode = "BLEND"; // the cutoff means nothing there
+        CHECK(tp::map_gltf_material(g).material.alpha == 1.0f);
     }
-    SECTION("a rough metal: the base colour is the specular reflectance, no diffuse") {
-        const auto r = tp::map_gltf_material(pbr(vec3(1.0f, 0.78f, 0.34f), 1.0f, 0.3f), none);
-        CHECK(r.material.type == tp::MATERIAL_PHONG);
-        check_near(r.material.kd, vec3(0.0f));
-        check_near(r.material.ks, vec3(1.0f, 0.78f, 0.34f));
-        CHECK(r.material.ns == Approx(0.5 / std::pow(0.3, 4) - 0.5).epsilon(1e-6)); // 61.23
-    }
-    SECTION("half metallic: the two parts mixed") {
-        const auto r = tp::map_gltf_material(pbr(vec3(0.5f), 0.5f, 1.0f), none);
-        check_near(r.material.kd, vec3(0.5f * 0.96f * 0.5f));        // 0.24
-        check_near(r.material.ks, vec3(0.5f * 0.04f + 0.5f * 0.5f)); // 0.27
-    }
-    SECTION("metallic 1 and roughness 0: the mirror, tinted by the base colour") {
-        const auto r = tp::map_gltf_material(pbr(vec3(0.9f, 0.8f, 0.7f), 1.0f, 0.0f), none);
-        CHECK(r.material.type == tp::MATERIAL_MIRROR);
-        check_near(r.material.ks, vec3(0.9f, 0.8f, 0.7f));
-    }
-    SECTION("nearly smooth metal stays Phong, its exponent capped") {
-        const auto r = tp::map_gltf_material(pbr(one, 1.0f, 1e-3f), none);
-        CHECK(r.material.type == tp::MATERIAL_PHONG);
-        CHECK(r.material.ns == tp::kMaxGltfPhongExponent);
-    }
-    SECTION("smooth plastic (roughness 0, metallic 0) stays Phong with the capped exponent") {
-        const auto r = tp::map_gltf_material(pbr(vec3(0.5f), 0.0f, 0.0f), none);
-        CHECK(r.material.type == tp::MATERIAL_PHONG);
-        CHECK(r.material.ns == tp::kMaxGltfPhongExponent);
-    }
-    SECTION("transmission and ior: the dielectric, tinted by the base colour") {
-        GltfMaterial m = pbr(vec3(0.9f, 1.0f, 0.9f), 0.0f, 0.0f);
-        m.transmission = 1.0f;
-        m.ior = 1.33f;
-        const auto r = tp::map_gltf_material(m, none);
-        CHECK(r.material.type == tp::MATERIAL_DIELECTRIC);
-        CHECK(r.material.ior == 1.33f);
-        check_near(r.material.tf, vec3(0.9f, 1.0f, 0.9f));
-        CHECK(r.dropped.empty());
-        m.transmission = 0.5f;
-        m.roughness = 0.2f;
-        const auto partial = tp::map_gltf_material(m, none);
-        CHECK(partial.material.type == tp::MATERIAL_DIELECTRIC);
-        CHECK(mentions(partial.dropped, "transmissionFactor 0.5"));
-        CHECK(mentions(partial.dropped, "roughnessFactor 0.2"));
-    }
-    SECTION("KHR_materials_ior changes F0 of a dielectric that does not transmit") {
-        GltfMaterial m = pbr(one, 0.0f, 1.0f);
-        m.ior = 2.0f; // F0 = ((2 - 1) / (2 + 1))^2 = 1/9
-        const auto r = tp::map_gltf_material(m, none);
-        check_near(r.material.ks, vec3(1.0f / 9.0f));
-        check_near(r.material.kd, vec3(8.0f / 9.0f));
-    }
-    SECTION("KHR_materials_specular scales F0; F0 is clamped to 1") {
-        GltfMaterial m = pbr(vec3(0.6f), 0.0f, 1.0f);
-        m.specular = 0.0f;
-        const auto off = tp::map_gltf_material(m, none);
-        check_near(off.material.kd, vec3(0.6f));
-        check_near(off.material.ks, vec3(0.0f));
-        m.specular = 1.0f;
-        m.specular_color = vec3(50.0f, 1.0f, 0.5f); // F0 = min(1, 0.04 * (50, 1, 0.5))
-        const auto tinted = tp::map_gltf_material(m, none);
-        check_near(tinted.material.ks, vec3(1.0f, 0.04f, 0.02f));
-        check_near(tinted.material.kd, vec3(0.0f, 0.6f * 0.96f, 0.6f * 0.98f));
-    }
-    SECTION("emission: factor times strength times the emissive texture's mean") {
-        GltfMaterial m = pbr(one, 0.0f, 1.0f);
-        m.emissive = vec3(1.0f, 0.5f, 0.25f);
-        m.emissive_strength = 4.0f;
-        check_near(tp::map_gltf_material(m, none).material.ke, vec3(4.0f, 2.0f, 1.0f));
-        m.emissive_texture.texture = 0;
-        const auto textured = tp::map_gltf_material(m, vec3(0.5f, 0.25f, 1.0f));
-        check_near(textured.material.ke, vec3(2.0f, 0.5f, 1.0f));
-        CHECK(mentions(textured.dropped, "emissiveTexture"));
-    }
-    SECTION("what is not rendered is listed") {
-        GltfMaterial m = pbr(one, 0.5f, 1.0f);
-        m.alpha_mode = "BLEND";
-        m.base_color_texture.texture = 0;
-        m.unused = {"normalTexture", "KHR_materials_clearcoat"};
-        const auto r = tp::map_gltf_material(m, none);
-        CHECK(r.uses_base_color_texture);
-        CHECK(mentions(r.dropped, "alphaMode BLEND"));
-        CHECK(mentions(r.dropped, "normalTexture"));
-        CHECK(mentions(r.dropped, "KHR_materials_clearcoat"));
-        CHECK(mentions(r.dropped, "baseColorTexture: tints the diffuse part only"));
-        m.metallic = 1.0f;
-        m.roughness = 0.0f;
-        const auto mirror = tp::map_gltf_material(m, none);
-        CHECK_FALSE(mirror.uses_base_color_texture);
-        CHECK(mentions(mirror.dropped, "baseColorTexture"));
+    SECTION("no attenuation distance is FLOAT_MAX, the engines' 'none'") {
+        GltfMaterial g;
+        g.attenuation_distance = std::numeric_limits<float>::infinity();
+        CHECK(tp::map_gltf_material(g).material.attenuation_distance == tp::FLOAT_MAX);
     }
 }
 
-TEST_CASE("glTF roughness to Phong exponent: Walter's relation and the lobe widths",
+TEST_CASE("glTF texture uses: which field, which colour space", "[unit][gltf]") {
+    GltfMaterial g;
+    int next = 0;
+    for (tp::GltfTextureRef* t : {&g.base_color_texture, &g.metallic_roughness_texture,
+                                  &g.normal_texture, &g.emissive_texture, &g.transmission_texture,
+                                  &g.specular_texture, &g.specular_color_texture})
+        t->texture = next++;
+    const std::vector<tp::GltfTextureUse> uses = tp::gltf_material_textures(g);
+    REQUIRE(uses.size() == 7);
+    struct Expected {
+        int tp::Material::*field;
+        bool srgb;
+    };
+    // glTF 2.0, section 3.9: colour textures are sRGB-encoded, data textures linear.
+    const Expected expected[] = {{&tp::Material::kd_texture, true},
+                                 {&tp::Material::metallic_roughness_texture, false},
+                                 {&tp::Material::normal_texture, false},
+                                 {&tp::Material::emissive_texture, true},
+                                 {&tp::Material::transmission_texture, false},
+                                 {&tp::Material::specular_texture, false},
+                                 {&tp::Material::specular_color_texture, true}};
+    for (size_t i = 0; i < uses.size(); ++i) {
+        CAPTURE(uses[i].name);
+        CHECK(uses[i].ref->texture == int(i));
+        CHECK(uses[i].field == expected[i].field);
+        CHECK(uses[i].srgb == expected[i].srgb);
+    }
+}
+
+TEST_CASE("what a path tracer ignores and what twinpath does not read are listed apart",
           "[unit][gltf]") {
-    for (double r : {1.0, 0.8, 0.5, 0.3, 0.2, 0.1, 0.05}) {
-        CAPTURE(r);
-        // Walter et al. 2007, section 5.2: a_p = 2 / alpha^2 - 2 with glTF's alpha = r^2.
-        const double alpha = r * r, a_p = 2.0 / (alpha * alpha) - 2.0;
-        const double ns = tp::gltf_phong_exponent(float(r));
-        CHECK(ns == Approx(a_p / 4.0).epsilon(1e-6).margin(1e-6));
-        if (a_p < 50.0) continue;
-        // The factor 1/4: where the half-vector lobe cos^a_p(theta) has fallen to one half,
-        // the mirror-direction lobe cos^ns(2 theta) has too (angles small for a_p >= 50: the
-        // two agree to a few percent; with a factor 1/2 or 1 it would be 0.25 or 0.06).
-        const double theta = std::acos(std::pow(0.5, 1.0 / a_p));
-        CHECK(std::pow(std::cos(2.0 * theta), ns) == Approx(0.5).epsilon(0.05));
-    }
+    GltfMaterial g;
+    g.ignored = {"occlusionTexture", "KHR_materials_volume.thicknessTexture"};
+    g.unused = {"KHR_materials_clearcoat"};
+    const auto r = tp::map_gltf_material(g);
+    REQUIRE(r.ignored.size() == 2);
+    CHECK(
+        mentions(r.ignored, "occlusionTexture: ignored by a path tracer (it computes occlusion)"));
+    CHECK(mentions(r.ignored, "thicknessTexture: ignored (a ray tracer measures thickness)"));
+    REQUIRE(r.dropped.size() == 1);
+    CHECK(mentions(r.dropped, "KHR_materials_clearcoat"));
 }
 
-TEST_CASE("every glTF material in range maps to one that conserves energy", "[unit][gltf]") {
-    // validate_material (scene.h) rejects Kd + Ks > 1 per channel; the rule must never produce
-    // it from valid input (factors in [0, 1], specular colour and ior unbounded above).
-    for (float metallic : {0.0f, 0.3f, 1.0f})
-        for (float roughness : {0.0f, 0.5f, 1.0f})
-            for (float base : {0.0f, 0.7f, 1.0f})
-                for (float spec : {0.0f, 1.0f})
-                    for (float spec_color : {0.0f, 1.0f, 1000.0f})
-                        for (float ior : {1.0f, 1.5f, 100.0f}) {
-                            GltfMaterial m = pbr(vec3(base, 1.0f, 0.0f), metallic, roughness);
-                            m.specular = spec;
-                            m.specular_color = vec3(spec_color);
-                            m.ior = ior;
-                            const auto r = tp::map_gltf_material(m, vec3(1.0f));
-                            CHECK_NOTHROW(tp::validate_material(r.material, "grid"));
-                        }
+TEST_CASE("every glTF material in range passes validate_material", "[unit][gltf]") {
+    // validate_material (scene.h) checks the ranges the BSDF is defined for; the mapping must
+    // never produce a material outside them from input read_gltf_document accepts.
+    for (float factor : {0.0f, 0.5f, 1.0f})
+        for (float spec_color : {0.0f, 1.0f, 1000.0f})
+            for (float ior : {0.0f, 1.0f, 1.5f, 100.0f})
+                for (float cutoff : {0.0f, 0.5f, 7.0f})
+                    for (const char* mode : {"OPAQUE", "MASK", "BLEND"}) {
+                        GltfMaterial g;
+                        g.base_color = vec3(factor, 1.0f, 0.0f);
+                        g.base_alpha = factor;
+                        g.metallic = g.roughness = g.transmission = g.specular = factor;
+                        g.specular_color = vec3(spec_color);
+                        g.ior = ior;
+                        g.alpha_cutoff = cutoff;
+                        g.alpha_mode = mode;
+                        g.thickness = factor;
+                        g.attenuation_color = vec3(factor);
+                        CHECK_NOTHROW(
+                            tp::validate_material(tp::map_gltf_material(g).material, "grid"));
+                    }
 }

@@ -1,7 +1,9 @@
 // What the scene loaders make of good input (bad input is tests/cli/bad_input_test.cpp): the
-// OBJ/MTL statements docs/design.md maps, JSON transforms and instancing, lights, and what
-// flatten() derives from them.
+// OBJ/MTL statements docs/design.md maps, JSON transforms and instancing, lights, the JSON pbr
+// material and texture slots, and what flatten() derives from them.
+#include "image/png_io.h"
 #include "scene/flatten.h"
+#include "shared/math.h"
 #include "scene/load.h"
 #include "shared/surface.h"
 #include "support/test_paths.h"
@@ -38,9 +40,11 @@ bool mentions(const std::vector<std::string>& warnings, const std::string& s) {
 
 TEST_CASE("OBJ and MTL: statements and indices and the material mapping", "[scene][obj]") {
     const fs::path dir = tp::test::temp_dir("loader-obj");
+    tp::write_png((dir / "wood.png").string(), 1, 1, {200, 150, 100});
     std::ofstream(dir / "m.mtl")
         << "# materials\r\n"
            "newmtl glossy\r\nKd 0.2 0.3 0.4\r\nKs 0.5\r\nNs 80\r\nKa 1 1 1\r\n"
+           "map_Kd -s 1 1 1 wood.png\r\n"
            "newmtl chrome\nillum 3\nKs 0.9 0.8 0.7\n"
            "newmtl glass\nillum 7\nNi 1.33\nTf 0.9 1 0.9\n"
            "newmtl lamp\nKe 5 4 3\nillum 5\n";
@@ -61,6 +65,14 @@ TEST_CASE("OBJ and MTL: statements and indices and the material mapping", "[scen
     CHECK(glossy.kd == tp::vec3(0.2f, 0.3f, 0.4f));
     CHECK(glossy.ks == tp::vec3(0.5f)); // the grey shorthand
     CHECK(glossy.ns == 80.0f);
+    // map_Kd: a slot with OBJ's uv convention (s = u, t = 1 - v) reading sRGB colour.
+    REQUIRE(s.textures.size() == 1);
+    REQUIRE(glossy.kd_texture == 0);
+    const tp::TextureSlot& slot = s.texture_slots.at(0);
+    CHECK(slot.image == 0);
+    CHECK(slot.transform_s == tp::vec3(1, 0, 0));
+    CHECK(slot.transform_t == tp::vec3(0, -1, 1));
+    CHECK(slot.sampling == tp::SLOT_SRGB);
     CHECK(s.materials[2].type == tp::MATERIAL_MIRROR);
     CHECK(s.materials[2].ks == tp::vec3(0.9f, 0.8f, 0.7f));
     CHECK(s.materials[3].type == tp::MATERIAL_DIELECTRIC);
@@ -172,6 +184,103 @@ TEST_CASE("JSON: transforms and instancing and lights and what flatten derives",
     // Camera: looking down -Z from (0, 1, 5), 2:1 film.
     CHECK(glm::length(f.params.camera.forward - tp::vec3(0, 0, -1)) < 1e-6f);
     CHECK(f.params.camera.aspect == 2.0f);
+    fs::remove_all(dir);
+}
+
+TEST_CASE("JSON: a pbr material with every field, its texture slots and tangents",
+          "[scene][json]") {
+    const fs::path dir = tp::test::temp_dir("loader-json-pbr");
+    tp::write_png((dir / "albedo.png").string(), 2, 2, {255, 0, 0, 0, 255, 0, 0, 0, 255, 9, 9, 9});
+    tp::write_png((dir / "data.png").string(), 1, 1, {128, 128, 255});
+    std::ofstream(dir / "s.json") << R"({
+  "textures": {"albedo": {"file": "albedo.png"}, "data": {"file": "data.png"}},
+  "materials": {
+    "glass": {"type": "pbr", "base_color": [0.9, 0.8, 0.7], "metallic": 0.1, "roughness": 0.2,
+              "ior": 1.45, "transmission": 0.95, "specular": 0.5, "specular_color": [1, 0.9, 2],
+              "Ke": [0.5, 0.25, 0.125], "alpha": 0.75, "alpha_mode": "mask", "alpha_cutoff": 0.3,
+              "thickness": 0.01, "attenuation_color": [0.5, 0.6, 0.7],
+              "attenuation_distance": 2.5, "normal_scale": 0.8,
+              "base_color_texture": "albedo", "metallic_roughness_texture": "data",
+              "normal_texture": "data", "emissive_texture": "albedo",
+              "transmission_texture": "data", "specular_texture": "data",
+              "specular_color_texture": "albedo"},
+    "defaults": {"type": "pbr"},
+    "blend": {"type": "pbr", "alpha_mode": "blend", "thickness": 0},
+    "phong": {"Kd": [0.5, 0.5, 0.5], "map_Kd": "albedo"}
+  },
+  "meshes": {"panel": {"type": "quad"}, "tri": {"type": "triangles",
+             "vertices": [[0, 0, 0], [1, 0, 0], [0, 1, 0]], "triangles": [[0, 1, 2]]}},
+  "objects": [{"mesh": "panel", "material": "glass"}, {"mesh": "tri", "material": "defaults"},
+              {"mesh": "tri", "material": "blend"}, {"mesh": "tri", "material": "phong"}]
+})";
+    const Loaded l = load(dir / "s.json");
+    const tp::Scene& s = l.scene;
+    const auto material = [&](const std::string& name) -> const tp::Material& {
+        for (size_t i = 0; i < s.materials.size(); ++i)
+            if (s.material_names[i] == name) return s.materials[i];
+        FAIL("no material " << name);
+        return s.materials.at(0);
+    };
+    const tp::Material& m = material("glass");
+    CHECK(m.type == tp::MATERIAL_PBR);
+    CHECK(m.kd == tp::vec3(0.9f, 0.8f, 0.7f));
+    CHECK(m.metallic == 0.1f);
+    CHECK(m.roughness == 0.2f);
+    CHECK(m.ior == 1.45f);
+    CHECK(m.transmission == 0.95f);
+    CHECK(m.specular == 0.5f);
+    CHECK(m.ks == tp::vec3(1.0f, 0.9f, 2.0f));
+    CHECK(m.ke == tp::vec3(0.5f, 0.25f, 0.125f));
+    CHECK(m.alpha == 0.75f);
+    CHECK(m.alpha_mode == tp::ALPHA_MASK);
+    CHECK(m.alpha_cutoff == 0.3f);
+    CHECK(m.flags == tp::MATERIAL_FLAG_VOLUME);
+    CHECK(m.tf == tp::vec3(0.5f, 0.6f, 0.7f));
+    CHECK(m.attenuation_distance == 2.5f);
+    CHECK(m.normal_scale == 0.8f);
+    // Slots with OBJ's uv convention; colour slots sRGB, data slots linear; equal slots shared.
+    REQUIRE(s.textures.size() == 2);
+    const auto check_slot = [&](int index, uint32_t image, bool srgb) {
+        REQUIRE(index != tp::NO_TEXTURE);
+        const tp::TextureSlot& t = s.texture_slots.at(size_t(index));
+        CHECK(t.image == image);
+        CHECK(t.sampling == (srgb ? tp::SLOT_SRGB : 0u));
+        CHECK(t.transform_s == tp::vec3(1, 0, 0));
+        CHECK(t.transform_t == tp::vec3(0, -1, 1));
+    };
+    check_slot(m.kd_texture, 0, true);
+    check_slot(m.metallic_roughness_texture, 1, false);
+    check_slot(m.normal_texture, 1, false);
+    check_slot(m.emissive_texture, 0, true);
+    check_slot(m.transmission_texture, 1, false);
+    check_slot(m.specular_texture, 1, false);
+    check_slot(m.specular_color_texture, 0, true);
+    CHECK(m.emissive_texture == m.kd_texture);
+    CHECK(m.normal_texture == m.specular_texture);
+    CHECK(s.texture_slots.size() == 2); // the phong map_Kd shares the sRGB slot of "albedo"
+    CHECK(material("phong").kd_texture == m.kd_texture);
+    // glTF's defaults.
+    const tp::Material& d = material("defaults");
+    CHECK(d.type == tp::MATERIAL_PBR);
+    CHECK(d.kd == tp::vec3(1.0f));
+    CHECK(d.metallic == 1.0f);
+    CHECK(d.roughness == 1.0f);
+    CHECK(d.ior == 1.5f);
+    CHECK(d.specular == 1.0f);
+    CHECK(d.ks == tp::vec3(1.0f));
+    CHECK(d.alpha_mode == tp::ALPHA_OPAQUE);
+    CHECK(d.alpha_cutoff == 0.5f);
+    CHECK(d.flags == 0u);
+    CHECK(d.attenuation_distance == tp::FLOAT_MAX);
+    CHECK(d.normal_texture == tp::NO_TEXTURE);
+    CHECK(material("blend").alpha_mode == tp::ALPHA_BLEND);
+    CHECK(material("blend").flags == 0u);
+    // The normal-mapped quad (XZ plane, facing +Y, OBJ uvs: u along +X, v along -Z) gets
+    // tangents +X with handedness +1: cross(+Y, +X) = -Z is up its image. The other mesh none.
+    const tp::Mesh& panel = s.meshes.at(s.objects.at(0).mesh);
+    REQUIRE(panel.tangents.size() == panel.positions.size());
+    for (const tp::vec4& t : panel.tangents) CHECK(t == tp::vec4(1, 0, 0, 1));
+    CHECK(s.meshes.at(s.objects.at(1).mesh).tangents.empty());
     fs::remove_all(dir);
 }
 
