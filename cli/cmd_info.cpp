@@ -15,6 +15,7 @@
 #include "vulkan_rt/renderer/vulkan_renderer.h"
 
 #include <chrono>
+#include <cmath>
 #include <filesystem>
 #include <fmt/core.h>
 #include <nlohmann/json.hpp>
@@ -112,20 +113,31 @@ nlohmann::json slot_json(const char* use, int slot, const Scene& scene) {
     return j;
 }
 
-// "'wood.png' 512x512, uv 0, repeat/clamp, bilinear, sRGB, s = 2 u + 0.25, t = v"
+// An affine form a u + b v + c as "2 u + 0.25", "1 - v".
+std::string affine(const nlohmann::json& row) {
+    const char* names[] = {"u", "v", ""};
+    std::string s;
+    for (int k = 0; k < 3; ++k) {
+        const float c = row[k].get<float>();
+        if (c == 0.0f) continue;
+        const float m = std::abs(c);
+        const std::string term = m == 1.0f && k < 2 ? names[k]
+                                 : k < 2            ? fmt::format("{:.4g} {}", m, names[k])
+                                                    : fmt::format("{:.4g}", m);
+        s += s.empty() ? (c < 0.0f ? "-" : "") + term : (c < 0.0f ? " - " : " + ") + term;
+    }
+    return s.empty() ? "0" : s;
+}
+
+// "'wood.png' 512x512, uv 0, repeat/clamp, bilinear, sRGB, s = 2 u + 0.25, t = 2 v"
 std::string slot_text(const nlohmann::json& j) {
     std::string s =
         fmt::format("'{}' {}x{}, uv {}, {}/{}, {}{}", j["image"].get<std::string>(),
                     j["width"].get<uint32_t>(), j["height"].get<uint32_t>(), j["uv_set"].get<int>(),
                     j["wrap_s"].get<std::string>(), j["wrap_t"].get<std::string>(),
                     j["filter"].get<std::string>(), j["srgb"].get<bool>() ? ", sRGB" : ", linear");
-    if (j.contains("transform")) {
-        const auto row = [](const nlohmann::json& r) {
-            return fmt::format("{:.4g} u + {:.4g} v + {:.4g}", r[0].get<float>(), r[1].get<float>(),
-                               r[2].get<float>());
-        };
-        s += ", s = " + row(j["transform"][0]) + ", t = " + row(j["transform"][1]);
-    }
+    if (j.contains("transform"))
+        s += ", s = " + affine(j["transform"][0]) + ", t = " + affine(j["transform"][1]);
     return s;
 }
 
@@ -176,9 +188,10 @@ nlohmann::json light_json(const LightDesc& l, bool gltf) {
     return j;
 }
 
+// "(x, y, z)"; adding 0 turns a negative zero (a negated axis) into 0.
 std::string triple(const nlohmann::json& v) {
-    return fmt::format("({:.4g}, {:.4g}, {:.4g})", v[0].get<double>(), v[1].get<double>(),
-                       v[2].get<double>());
+    return fmt::format("({:.4g}, {:.4g}, {:.4g})", v[0].get<double>() + 0.0,
+                       v[1].get<double>() + 0.0, v[2].get<double>() + 0.0);
 }
 
 std::string light_text(const nlohmann::json& l) {
