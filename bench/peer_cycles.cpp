@@ -30,7 +30,7 @@ const char* material_kind(uint32_t type) {
 
 // Texture t as an EXR of its linear texels, top row first (image/texture.h's layout, which is
 // also how Blender shows an image: uv (0, 0) at the bottom left, as twinpath's uv_to_image).
-std::string write_texture(const FlatScene& s, size_t t, const std::string& dir) {
+std::string write_texture(const FlatScene& s, size_t t, bool srgb, const std::string& dir) {
     const TextureInfo& info = s.textures[t];
     ExrImage img;
     img.width = int(info.width);
@@ -39,7 +39,7 @@ std::string write_texture(const FlatScene& s, size_t t, const std::string& dir) 
     for (int c = 0; c < 3; ++c) {
         std::vector<float>& ch = img.channels[names[c]];
         ch.resize(size_t(info.width) * info.height);
-        for (size_t i = 0; i < ch.size(); ++i) ch[i] = s.texels[info.offset + i][c];
+        for (size_t i = 0; i < ch.size(); ++i) ch[i] = flat_texel_linear(s, uint32_t(t), i, srgb)[c];
     }
     const std::string path = (fs::path(dir) / fmt::format("texture{}.exr", t)).string();
     write_exr(path, img);
@@ -66,6 +66,10 @@ double progress_time(const std::string& line) {
 std::string cycles_unsupported(const FlatScene& s) {
     if (s.params.env_light != NO_INDEX && s.params.env_texture != NO_TEXTURE)
         return "an environment map (the Cycles export writes a constant environment only)";
+    for (const Material& m : s.materials)
+        if (m.type == MATERIAL_PBR)
+            return "a glTF material (the Cycles export writes Phong, mirror and glass; render "
+                   "the .glb in Blender instead)";
     return "";
 }
 
@@ -87,8 +91,12 @@ void write_cycles_scene(const FlatScene& s, const std::string& dir) {
                   {"ior", m.ior},
                   {"tf", rgb(m.tf)}};
         if (m.kd_texture != NO_TEXTURE) {
-            std::string& path = textures[size_t(m.kd_texture)];
-            if (path.empty()) path = write_texture(s, size_t(m.kd_texture), dir);
+            // The slot's image, decoded as the slot reads it; the export keeps OBJ's uv
+            // convention, which the peer scenes' slots use (obj_texture_slot).
+            const TextureSlot& slot = s.texture_slots[size_t(m.kd_texture)];
+            std::string& path = textures[slot.image];
+            if (path.empty())
+                path = write_texture(s, slot.image, (slot.sampling & SLOT_SRGB) != 0u, dir);
             j["texture"] = path;
         }
         materials.push_back(j);

@@ -110,6 +110,20 @@ void frame_camera(CameraDesc& c, const Box& world, float aspect) {
 
 } // namespace
 
+vec4 flat_texel_linear(const FlatScene& scene, uint32_t image, size_t i, bool srgb) {
+    const TextureInfo& info = scene.textures[image];
+    const uint32_t* w = scene.texel_words.data() + info.offset;
+    vec4 c;
+    if (info.format == TEXEL_RGBA8)
+        c = unpack_rgba8(w[i]);
+    else if (info.format == TEXEL_RGBA16)
+        c = unpack_rgba16(w[2 * i], w[2 * i + 1]);
+    else
+        c = vec4(uintBitsToFloat(w[4 * i]), uintBitsToFloat(w[4 * i + 1]),
+                 uintBitsToFloat(w[4 * i + 2]), uintBitsToFloat(w[4 * i + 3]));
+    return srgb && info.format != TEXEL_RGBA32F ? srgb_to_linear4(c) : c;
+}
+
 FlatScene flatten(const Scene& input) {
     const std::optional<DielectricInterfaces> merged = merge_dielectric_interfaces(input);
     const Scene& scene = merged ? merged->scene : input;

@@ -81,6 +81,10 @@ struct FlatScene {
     }
 };
 
+// Texel i of image `image` in linear values, as the engines decode it (shared/texture.h):
+// integer texels sRGB-decoded where `srgb`.
+vec4 flat_texel_linear(const FlatScene& scene, uint32_t image, size_t i, bool srgb);
+
 // Coincident faces of touching dielectrics become one interface each (dielectric_interfaces.h).
 // Throws InputError for an impossible camera or film, or geometry beyond kMaxWorldRange.
 FlatScene flatten(const Scene& scene);

@@ -293,10 +293,14 @@ void make_input(uint32_t id, InputGen& g, FnIn& x) {
     }
     case FN_TEXTURE_FOOTPRINT:
         x.f[0] = vec4(g.uniform(-2.0f, 3.0f), g.uniform(-2.0f, 3.0f), 0.0f, 0.0f);
-        x.u = uvec4(1 + g.below(2048), 1 + g.below(2048), g.below(2), 0u);
+        // Wrap modes of t and s (SLOT_WRAP_*: repeat, clamp, mirror).
+        x.u = uvec4(1 + g.below(2048), 1 + g.below(2048), g.below(3), g.below(3));
         break;
     case FN_TEXTURE_BILERP:
-        for (int i = 0; i < 4; ++i) set3(x, i, g.color(10.0f));
+        for (int i = 0; i < 4; ++i) {
+            set3(x, i, g.color(10.0f));
+            x.f[i].w = g.uni();
+        }
         x.f[4] = vec4(g.uni(), g.uni(), 0.0f, 0.0f);
         break;
     case FN_LATLONG_TO_DIRECTION:

@@ -482,6 +482,7 @@ std::vector<Case> cases() {
                      double m = 0;
                      for (int i = 0; i < 4; ++i) m = std::max(m, sum_abs(d3(x.f[i])));
                      k.close3("c", v3(gpu.f[0]), v3(cpu.f[0]), 8.0 * kU * m, 0);
+                     k.close("alpha", gpu.f[0].w, cpu.f[0].w, 8.0 * kU, 0);
                  }});
     // Products of two sin/cos values.
     c.push_back({FN_LATLONG_TO_DIRECTION, "latlong_to_direction",

@@ -154,9 +154,9 @@ void compare_with_embree(const FlatScene& scene, uint32_t features, BvhLayout la
     size_t hits = 0, hit_mismatch = 0, ties = 0, occl_mismatch = 0, bary_mismatch = 0;
     double worst_t = 0.0, worst_bary = 0.0;
     for (size_t i = 0; i < rays.size(); ++i) {
-        const Hit h = embree.intersect(rays[i]);
+        const Hit h = embree.intersect(rays[i], nullptr);
         hits += h.found;
-        occl_mismatch += embree.occluded(rays[i]) != (gpu.occluded[i] != 0);
+        occl_mismatch += embree.occluded(rays[i], nullptr) != (gpu.occluded[i] != 0);
         if (h.found != (gpu.found[i] != 0)) {
             ++hit_mismatch;
             continue;

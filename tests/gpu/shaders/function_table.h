@@ -452,13 +452,13 @@ inline FnOut run_function(uint id, FnIn x) {
         o.u.x = wrap_texel(a.x, x.u.x);
         break;
     case FN_TEXTURE_FOOTPRINT: {
-        TexelFootprint fp = texture_footprint(vec2(a.x, a.y), x.u.x, x.u.y, x.u.z != 0u);
+        TexelFootprint fp = texture_footprint(vec2(a.x, a.y), x.u.x, x.u.y, x.u.w, x.u.z);
         o.u = uvec4(fp.i00, fp.i10, fp.i01, fp.i11);
         o.f[0] = vec4(fp.f.x, fp.f.y, 0.0f, 0.0f);
         break;
     }
     case FN_TEXTURE_BILERP:
-        fn_put3(o, 0u, texture_bilerp(a, b, c, d, vec2(e.x, e.y)));
+        o.f[0] = texture_bilerp(x.f[0], x.f[1], x.f[2], x.f[3], vec2(e.x, e.y));
         break;
     case FN_LATLONG_TO_DIRECTION:
         fn_put3(o, 0u, latlong_to_direction(vec2(a.x, a.y)));
