@@ -2,9 +2,10 @@
 // glTF, for the format-equivalence tests: the same triangles in the same order, one mesh per
 // material (as the OBJ loader groups faces by usemtl), vertices in metres as float32 (the glTF
 // buffer's type; the OBJ prints each float exactly), no camera (the tests pass the bundled
-// camera as flags), and glTF materials whose mapping gives the MTL's numbers exactly:
-// metallic 0, roughness 1, KHR_materials_specular factor 0 (so Kd is the base colour, Ks 0,
-// Ns 0) and emission as emissiveFactor times KHR_materials_emissive_strength.
+// camera as flags), and glTF materials that are the MTL's Lambertian ones: base colour the
+// MTL's Kd, metallic 0, roughness 1 and KHR_materials_specular factor 0 (glTF's BSDF without
+// its specular layer is Kd / pi), and emission as emissiveFactor times
+// KHR_materials_emissive_strength.
 #pragma once
 
 #include <string>
