@@ -86,7 +86,7 @@ struct GltfSampler {
 // material does not give it.
 struct GltfTextureRef {
     int texture = GLTF_NONE;
-    uint32_t tex_coord = 0; // KHR_texture_transform's texCoord where it gives one
+    uint32_t tex_coord = 0;    // KHR_texture_transform's texCoord where it gives one
     glm::dmat3 transform{1.0}; // uv -> uv: T(offset) R(rotation) S(scale), as the extension
     std::string field;         // where it was given: "materials[2].emissiveTexture"
 };

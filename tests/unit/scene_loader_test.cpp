@@ -3,8 +3,8 @@
 // material and texture slots, and what flatten() derives from them.
 #include "image/png_io.h"
 #include "scene/flatten.h"
-#include "shared/math.h"
 #include "scene/load.h"
+#include "shared/math.h"
 #include "shared/surface.h"
 #include "support/test_paths.h"
 
