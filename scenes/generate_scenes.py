@@ -9,9 +9,13 @@ field of view is 2 atan(12.5 / 35) = 39.3077 degrees). The measured spectral ref
 represented by RGB values (white 0.725/0.71/0.68, red 0.63/0.065/0.05, green 0.14/0.45/0.091)
 and the light by radiance (17, 12, 4): the values commonly used for RGB renderings of this box.
 
-gltf_materials: a glTF 2.0 example (docs/scene-format.md, "glTF 2.0"): glTF's metallic-roughness
-materials on one sphere mesh stored once, a checkered floor texture embedded as a PNG, a camera
-node, a KHR_lights_punctual sun and an emissive panel; everything in one .gltf file.
+gltf_materials: a glTF 2.0 example (docs/scene-format.md, "glTF 2.0") of glTF's own material:
+two rows of metallic-roughness spheres (one sphere mesh stored once), a floor with a base colour
+(under KHR_texture_transform), metallic-roughness and normal texture, a leaf cut out of a quad by
+its alpha (MASK) under a spot light, a blue pane with alpha BLEND, a glass sphere with
+KHR_materials_volume absorption, an emissive panel whose stripes come from its second uv set,
+a camera node and KHR_lights_punctual lights in photometric units; textures embedded as PNGs,
+everything in one .gltf file.
 """
 import base64
 import json
@@ -168,9 +172,9 @@ def furnace(rho=0.8):
     }
 
 
-def png_stored(width, height, rgb_rows):
-    """An 8-bit RGB PNG whose zlib stream uses stored (uncompressed) deflate blocks, so that its
-    bytes do not depend on the zlib version."""
+def png_stored(width, height, rgb_rows, channels=3):
+    """An 8-bit RGB (or, with channels=4, RGBA) PNG whose zlib stream uses stored (uncompressed)
+    deflate blocks, so that its bytes do not depend on the zlib version."""
     raw = b"".join(b"\0" + bytes(row) for row in rgb_rows)
     blocks = b""
     for i in range(0, len(raw), 65535):
@@ -182,7 +186,7 @@ def png_stored(width, height, rgb_rows):
     def chunk(kind, data):
         return (struct.pack(">I", len(data)) + kind + data +
                 struct.pack(">I", zlib.crc32(kind + data)))
-    header = struct.pack(">IIBBBBB", width, height, 8, 2, 0, 0, 0)
+    header = struct.pack(">IIBBBBB", width, height, 8, 2 if channels == 3 else 6, 0, 0, 0)
     return (b"\x89PNG\r\n\x1a\n" + chunk(b"IHDR", header) + chunk(b"IDAT", stream) +
             chunk(b"IEND", b""))
 
@@ -218,6 +222,56 @@ def turn_minus_z_to(d):
     return [round(c / n, 9) + 0.0 for c in q]
 
 
+def tile_height(u, v):
+    """Height field of the floor's normal map: raised tiles with bevelled grout between them,
+    4 tiles per texture, periodic in u and v."""
+    def bevel(t):
+        d = abs((t * 4.0) % 1.0 - 0.5)  # 0.5 at a tile's centre line, 0 on the grout
+        return min(1.0, max(0.0, (0.5 - d) / 0.08))
+    return min(bevel(u + 0.5 / 4), bevel(v + 0.5 / 4))
+
+
+def floor_images(n=64):
+    """Base colour (RGB), metallic-roughness (G roughness, B metallic) and tangent-space normal
+    rows of the floor, n x n."""
+    color, mr, normal = [], [], []
+    for y in range(n):
+        crow, mrow, nrow = [], [], []
+        for x in range(n):
+            u, v = (x + 0.5) / n, (y + 0.5) / n
+            tile = (x * 4 // n + y * 4 // n) % 2
+            crow += [200, 196, 186] if tile == 0 else [70, 74, 90]
+            mrow += [255, 80 if tile == 0 else 230, 0]
+            # n = normalize(-dh/du, -dh/dv, 1/k): tangent x along +u, bitangent y along +v.
+            e = 0.5 / n
+            du = (tile_height(u + e, v) - tile_height(u - e, v)) / (2 * e)
+            dv = (tile_height(u, v + e) - tile_height(u, v - e)) / (2 * e)
+            k = 0.04
+            vec = [-du * k, -dv * k, 1.0]
+            length = math.sqrt(sum(c * c for c in vec))
+            nrow += [round(255 * (0.5 + 0.5 * c / length)) for c in vec]
+        color.append(crow)
+        mr.append(mrow)
+        normal.append(nrow)
+    return color, mr, normal
+
+
+def leaf_image(n=64):
+    """An RGBA leaf: an ellipse (alpha 255 inside, 0 outside) with a darker midrib, pointing
+    along +v."""
+    rows = []
+    for y in range(n):
+        row = []
+        for x in range(n):
+            u, v = (x + 0.5) / n * 2 - 1, (y + 0.5) / n * 2 - 1
+            inside = (u / 0.45) ** 2 + (v / 0.95) ** 2 <= 1.0 or (abs(u) < 0.04 and v > 0.8)
+            rib = abs(u) < 0.04 or abs(abs(u) - (0.9 - abs(v)) * 0.3) < 0.03
+            green = [40, 110, 30] if rib else [70, 160, 45]
+            row += green + [255 if inside else 0]
+        rows.append(row)
+    return rows
+
+
 def gltf_materials():
     buffer = bytearray()
     views, accessors = [], []
@@ -239,42 +293,81 @@ def gltf_materials():
         return add(b"".join(struct.pack("<3f", *p) for p in points), "VEC3", 5126, len(points),
                    {"min": lo, "max": hi})
 
+    def vec2s(points):
+        return add(b"".join(struct.pack("<2f", *p) for p in points), "VEC2", 5126, len(points))
+
     def indices(tris):
         flat = [i for t in tris for i in t]
         return add(struct.pack(f"<{len(flat)}H", *flat), "SCALAR", 5123, len(flat))
+
+    def png_uri(png):
+        return "data:image/png;base64," + base64.b64encode(png).decode()
 
     points, tris = uv_sphere()
     sphere = {"POSITION": vec3s(points), "NORMAL": vec3s(points)}
     sphere_indices = indices(tris)
     quad = [[-1, 0, -1], [-1, 0, 1], [1, 0, 1], [1, 0, -1]]  # facing +y
-    quad_attrs = {"POSITION": vec3s(quad),
-                  "TEXCOORD_0": add(struct.pack("<8f", 0, 0, 0, 4, 4, 4, 4, 0), "VEC2", 5126, 4)}
+    up = [[0, 1, 0]] * 4
     quad_indices = indices([[0, 1, 2], [0, 2, 3]])
-    checks = [[(200 if (x // 8 + y // 8) % 2 == 0 else 60) for x in range(64) for _ in range(3)]
-              for y in range(64)]
-    png = png_stored(64, 64, checks)
+    # The floor: glTF's uv (0, 0) is the image's top-left corner; 4 repeats across the floor.
+    # No TANGENT: twinpath generates the normal map's tangents (docs/scene-format.md).
+    floor_attrs = {"POSITION": vec3s(quad), "NORMAL": vec3s(up),
+                   "TEXCOORD_0": vec2s([[0, 0], [0, 4], [4, 4], [4, 0]])}
+    # The panel and the pane: uv set 0 over the quad, set 1 three stripes' periods across it.
+    panel_attrs = {"POSITION": floor_attrs["POSITION"],
+                   "TEXCOORD_0": vec2s([[0, 0], [0, 1], [1, 1], [1, 0]]),
+                   "TEXCOORD_1": vec2s([[0, 0], [0, 1], [3, 1], [3, 0]])}
+    color, mr, normal = floor_images()
+    stripes = [[255, 240, 220] * 4 + [40, 30, 20] * 4 for _ in range(2)]
+    images = [png_stored(64, 64, color), png_stored(64, 64, mr), png_stored(64, 64, normal),
+              png_stored(64, 64, leaf_image(), channels=4), png_stored(8, 2, stripes)]
 
     materials = [
-        {"name": "floor", "pbrMetallicRoughness": {"baseColorTexture": {"index": 0},
-                                                   "metallicFactor": 0.0, "roughnessFactor": 1.0}},
+        {"name": "floor", "pbrMetallicRoughness": {
+            "baseColorTexture": {"index": 0, "extensions": {"KHR_texture_transform": {
+                "offset": [0.125, 0.0], "rotation": 0.1, "scale": [1.0, 1.0]}}},
+            "metallicRoughnessTexture": {"index": 1},
+            "metallicFactor": 1.0, "roughnessFactor": 1.0},
+         "normalTexture": {"index": 2, "scale": 1.0}},
         {"name": "panel", "emissiveFactor": [1.0, 0.9, 0.8],
+         "emissiveTexture": {"index": 4, "texCoord": 1},
          "extensions": {"KHR_materials_emissive_strength": {"emissiveStrength": 6.0}},
          "pbrMetallicRoughness": {"baseColorFactor": [0, 0, 0, 1], "metallicFactor": 0.0}},
+        # Glass with a volume: it refracts and absorbs, reddish over a 0.5 m path.
         {"name": "glass", "pbrMetallicRoughness": {"metallicFactor": 0.0, "roughnessFactor": 0.0},
          "extensions": {"KHR_materials_transmission": {"transmissionFactor": 1.0},
-                        "KHR_materials_ior": {"ior": 1.5}}},
+                        "KHR_materials_ior": {"ior": 1.5},
+                        "KHR_materials_volume": {"thicknessFactor": 0.6,
+                                                 "attenuationColor": [0.95, 0.6, 0.5],
+                                                 "attenuationDistance": 0.5}}},
+        {"name": "leaf", "alphaMode": "MASK", "alphaCutoff": 0.5, "doubleSided": True,
+         "pbrMetallicRoughness": {"baseColorTexture": {"index": 3}, "metallicFactor": 0.0,
+                                  "roughnessFactor": 0.6}},
+        {"name": "pane", "alphaMode": "BLEND", "doubleSided": True,
+         "pbrMetallicRoughness": {"baseColorFactor": [0.1, 0.3, 1.0, 0.5],
+                                  "metallicFactor": 0.0, "roughnessFactor": 0.2}},
     ]
-    meshes = [{"name": "floor", "primitives": [{"attributes": quad_attrs,
-                                                "indices": quad_indices, "material": 0}]},
-              {"name": "panel", "primitives": [{"attributes": {"POSITION": quad_attrs["POSITION"]},
-                                                "indices": quad_indices, "material": 1}]},
-              {"name": "glass", "primitives": [{"attributes": sphere, "indices": sphere_indices,
-                                                "material": 2}]}]
+
+    def mesh(name, attrs, index, material):
+        return {"name": name, "primitives": [{"attributes": attrs, "indices": index,
+                                              "material": material}]}
+    meshes = [mesh("floor", floor_attrs, quad_indices, 0),
+              mesh("panel", panel_attrs, quad_indices, 1),
+              mesh("glass", sphere, sphere_indices, 2),
+              mesh("leaf", {"POSITION": floor_attrs["POSITION"], "NORMAL": floor_attrs["NORMAL"],
+                            "TEXCOORD_0": panel_attrs["TEXCOORD_0"]}, quad_indices, 3),
+              mesh("pane", {"POSITION": floor_attrs["POSITION"]}, quad_indices, 4)]
     nodes = [{"name": "floor", "mesh": 0, "scale": [4, 1, 4]},
              # The panel faces down: turned 180 degrees about x.
              {"name": "panel", "mesh": 1, "translation": [0, 3, 0.5], "rotation": [1, 0, 0, 0],
               "scale": [1.5, 1, 0.5]},
-             {"name": "glass", "mesh": 2, "translation": [1.5, 0.3, 1.6], "scale": [0.3] * 3}]
+             {"name": "glass", "mesh": 2, "translation": [1.5, 0.3, 1.6], "scale": [0.3] * 3},
+             # The leaf floats above the floor's front left, tilted, under the spot light.
+             {"name": "leaf", "mesh": 3, "translation": [-2.0, 0.9, 2.1],
+              "rotation": [0.0871557, 0.0, 0.0, 0.9961947], "scale": [0.3, 1, 0.3]},
+             # The pane stands upright in front of the plastic row, facing the camera.
+             {"name": "pane", "mesh": 4, "translation": [0.5, 0.45, 1.8],
+              "rotation": [0.7071068, 0.0, 0.0, 0.7071068], "scale": [0.45, 1, 0.45]}]
     # Two rows of spheres: plastic (metallic 0) and gold-coloured metal (metallic 1), roughness
     # 0 to 1 from left to right. Each material needs its own glTF mesh; they all name the same
     # accessors, and twinpath stores the sphere once.
@@ -285,21 +378,30 @@ def gltf_materials():
                               "pbrMetallicRoughness": {"baseColorFactor": color,
                                                        "metallicFactor": metallic,
                                                        "roughnessFactor": roughness}})
-            meshes.append({"name": materials[-1]["name"], "primitives": [{
-                "attributes": sphere, "indices": sphere_indices, "material": len(materials) - 1}]})
+            meshes.append(mesh(materials[-1]["name"], sphere, sphere_indices,
+                               len(materials) - 1))
             nodes.append({"name": materials[-1]["name"], "mesh": len(meshes) - 1,
                           "translation": [-2.0 + k, 0.4, z], "scale": [0.4] * 3})
-    # The camera at (0, 3.4, 5.5) looks at (0, 0.2, -0.2); the sun shines from (3, 5, 2).
+    # The camera at (0, 3.4, 5.5) looks at (0, 0.2, -0.2); the sun shines from (3, 5, 2); the
+    # spot light hangs above the leaf.
     nodes.append({"name": "camera", "camera": 0, "translation": [0, 3.4, 5.5],
                   "rotation": turn_minus_z_to([0, -3.2, -5.7])})
     nodes.append({"name": "sun", "rotation": turn_minus_z_to([-3, -5, -2]),
                   "extensions": {"KHR_lights_punctual": {"light": 0}}})
+    nodes.append({"name": "spot", "translation": [-1.9, 3.0, 2.2],
+                  "rotation": turn_minus_z_to([0.05, -1, -0.05]),
+                  "extensions": {"KHR_lights_punctual": {"light": 1}}})
     return {
         "asset": {"version": "2.0", "generator": "twinpath scenes/generate_scenes.py"},
         "extensionsUsed": ["KHR_lights_punctual", "KHR_materials_emissive_strength",
-                           "KHR_materials_ior", "KHR_materials_transmission"],
+                           "KHR_materials_ior", "KHR_materials_transmission",
+                           "KHR_materials_volume", "KHR_texture_transform"],
+        # Photometric units (docs/scene-format.md: 683 lm/W): a sun of 1000 lux is 1.46 W/m^2,
+        # a spot of 20000 cd 29 W/sr.
         "extensions": {"KHR_lights_punctual": {"lights": [
-            {"name": "sun", "type": "directional", "color": [1.0, 0.95, 0.85], "intensity": 1.5}]}},
+            {"name": "sun", "type": "directional", "color": [1.0, 0.95, 0.85], "intensity": 1000},
+            {"name": "spot", "type": "spot", "color": [1.0, 0.9, 0.7], "intensity": 20000,
+             "spot": {"innerConeAngle": 0.25, "outerConeAngle": 0.45}}]}},
         "scene": 0,
         "scenes": [{"nodes": list(range(len(nodes)))}],
         "nodes": nodes,
@@ -307,9 +409,13 @@ def gltf_materials():
                      "perspective": {"yfov": 0.6, "aspectRatio": 1.5, "znear": 0.1}}],
         "meshes": meshes,
         "materials": materials,
-        "textures": [{"source": 0, "sampler": 0}],
-        "samplers": [{"magFilter": 9729, "minFilter": 9987, "wrapS": 10497, "wrapT": 10497}],
-        "images": [{"uri": "data:image/png;base64," + base64.b64encode(png).decode()}],
+        "textures": [{"source": 0, "sampler": 0}, {"source": 1, "sampler": 0},
+                     {"source": 2, "sampler": 0}, {"source": 3, "sampler": 1},
+                     {"source": 4, "sampler": 2}],
+        "samplers": [{"magFilter": 9729, "minFilter": 9987, "wrapS": 10497, "wrapT": 10497},
+                     {"magFilter": 9729, "wrapS": 33071, "wrapT": 33071},
+                     {"magFilter": 9728, "wrapS": 33648, "wrapT": 10497}],
+        "images": [{"uri": png_uri(p)} for p in images],
         "accessors": accessors,
         "bufferViews": views,
         "buffers": [{"byteLength": len(buffer),
