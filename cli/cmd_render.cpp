@@ -6,6 +6,7 @@
 
 #include "compare/colormap.h"
 #include "cpu_ref/cpu_renderer.h"
+#include "image/exposure.h"
 #include "image/png_io.h"
 #include "render/render_header.h"
 #include "render/sampler.h"
@@ -35,6 +36,7 @@ struct RenderArgs : SceneArgs {
     uint32_t sample_offset = 0;
     std::string film = "lean"; // --film lean|full (render/film.h, FilmLayout)
     std::optional<std::string> stats, png;
+    std::string exposure = "0";                // --exposure STOPS|auto, of the PNG preview
     std::optional<std::string> pipeline_stats; // --pipeline-stats FILE (docs/gpu.md)
     std::string features = "scene";            // --features: scene (specialized) or all
     // Debugging (docs/debugging.md).
@@ -171,10 +173,20 @@ int run_render(const RenderArgs& a) {
     write_exr(out, render_exr(result, flat, opt));
     if (a.png) {
         const ExrImage img = result.film.to_exr();
+        const std::vector<float>&r = img.channel("R"), &g = img.channel("G"), &b = img.channel("B");
+        float stops = 0.0f;
+        if (a.exposure == "auto") {
+            std::vector<double> peaks(r.size());
+            for (size_t i = 0; i < peaks.size(); ++i)
+                peaks[i] = double(std::max({r[i], g[i], b[i]}));
+            stops = auto_exposure_stops(peaks);
+            fmt::print(stderr, "twinpath: --png exposure {:+.2f} stops (auto)\n", stops);
+        } else {
+            stops = float(std::stod(a.exposure));
+        }
         write_png(*a.png, img.width, img.height,
-                  debug.integrator == INTEGRATOR_COST
-                      ? heat_map(img.channel("B"))
-                      : tonemap_srgb8(img.channel("R"), img.channel("G"), img.channel("B"), 0.0f));
+                  debug.integrator == INTEGRATOR_COST ? heat_map(img.channel("B"))
+                                                      : tonemap_srgb8(r, g, b, stops));
     }
     if (debug.log) {
         write_path_log(*a.debug_log, path_log_info(result, flat, scene.path, debug),
@@ -227,6 +239,10 @@ Subcommand add_render_command(CLI::App& app) {
         ->capture_default_str();
     c->add_option("--stats", a->stats, "Write render statistics as JSON");
     c->add_option("--png", a->png, "Write a tone-mapped sRGB PNG preview");
+    c->add_option("--exposure", a->exposure,
+                  "The PNG preview's exposure: STOPS (radiance times 2^STOPS; default 0) or "
+                  "auto (the 99th percentile of the pixels maps to white)")
+        ->check(CLI::IsMember({"auto"}) | number_in(-60.0, 60.0));
     c->add_option("--pipeline-stats", a->pipeline_stats,
                   "Vulkan: write the driver's statistics of the render pipeline (register "
                   "counts, ...) as JSON (docs/gpu.md)");

@@ -1,5 +1,6 @@
 #include "compare/display.h"
 
+#include "image/exposure.h"
 #include "image/png_io.h"
 
 #include <algorithm>
@@ -12,11 +13,7 @@ float auto_exposure(const RgbImage& ref) {
     std::vector<double> peak(ref.pixels());
     for (size_t i = 0; i < peak.size(); ++i)
         peak[i] = std::max({ref.mean[0][i], ref.mean[1][i], ref.mean[2][i]});
-    const size_t k = std::min(peak.size() - 1, size_t(0.99 * double(peak.size())));
-    std::nth_element(peak.begin(), peak.begin() + std::ptrdiff_t(k), peak.end());
-    const double p99 = peak[k];
-    if (!(p99 > 0.0)) return 0.0f;
-    return float(std::clamp(-std::log2(p99), -30.0, 30.0));
+    return auto_exposure_stops(peak);
 }
 
 std::vector<float> display_srgb(const RgbImage& img, float exposure_stops) {

@@ -1,0 +1,18 @@
+#include "image/exposure.h"
+
+#include <algorithm>
+#include <cmath>
+#include <cstddef>
+
+namespace tp {
+
+float auto_exposure_stops(std::vector<double>& peaks) {
+    if (peaks.empty()) return 0.0f;
+    const size_t k = std::min(peaks.size() - 1, size_t(0.99 * double(peaks.size())));
+    std::nth_element(peaks.begin(), peaks.begin() + std::ptrdiff_t(k), peaks.end());
+    const double p99 = peaks[k];
+    if (!(p99 > 0.0) || !std::isfinite(p99)) return 0.0f;
+    return float(std::clamp(-std::log2(p99), -30.0, 30.0));
+}
+
+} // namespace tp
