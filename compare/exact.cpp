@@ -18,7 +18,7 @@ bool same(float x, float y, double tolerance, double& max_diff) {
 }
 
 bool is_aov_channel(const std::string& name) {
-    for (const char* prefix : {"albedo.", "normal.", "depth.", "id."})
+    for (const char* prefix : {"albedo.", "normal.", "depth.", "id.", "pbr."})
         if (name.rfind(prefix, 0) == 0) return true;
     return false;
 }

@@ -253,9 +253,14 @@ void add_aov_layers(ExrImage& img, const std::vector<PixelAov>& aovs) {
     std::vector<float>& depth = img.channels["depth.Z"];
     std::vector<float>& inst = img.channels["id.instance"];
     std::vector<float>& mat = img.channels["id.material"];
+    // glTF's metallic and roughness with their textures applied (0 for other materials).
+    std::vector<float>& roughness = img.channels["pbr.roughness"];
+    std::vector<float>& metallic = img.channels["pbr.metallic"];
     depth.resize(n);
     inst.resize(n);
     mat.resize(n);
+    roughness.resize(n);
+    metallic.resize(n);
     for (size_t i = 0; i < n; ++i) {
         const PixelAov& a = aovs[i];
         const bool miss = a.instance == NO_INDEX;
@@ -266,6 +271,8 @@ void add_aov_layers(ExrImage& img, const std::vector<PixelAov>& aovs) {
         depth[i] = miss ? std::numeric_limits<float>::infinity() : a.depth;
         inst[i] = miss ? -1.0f : float(a.instance);
         mat[i] = miss ? -1.0f : float(a.material);
+        roughness[i] = a.roughness;
+        metallic[i] = a.metallic;
     }
 }
 
