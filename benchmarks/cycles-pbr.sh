@@ -26,9 +26,11 @@ echo "cycles: $spp spp in $(($(date +%s) - start)) s"
 "$tp" render "$out/scene.glb" --spp "$tw_spp" --threads "$threads" --width 256 --height 256 \
   --max-depth 64 -o "$out/twinpath.exr" --png "$out/twinpath.png" --exposure auto
 "$tp" render "$out/scene.glb" --spp 1 --width 256 --height 256 --aov ids -o "$out/aov.exr"
-# The material ids as an image of their own (Blender reads an EXR's first layer only).
-oiiotool "$out/aov.exr" --ch id.material,id.material,id.material -o "$out/ids.exr"
+# Plain RGB images for Blender's reader: the means, and the material ids in R, G and B.
+oiiotool "$out/aov.exr" --ch R=id.material,G=id.material,B=id.material -o "$out/ids.exr"
+oiiotool "$out/twinpath.exr" --ch R,G,B -o "$out/twinpath_rgb.exr"
+oiiotool "$out/cycles.exr" --ch R,G,B -o "$out/cycles_rgb.exr"
 names=$("$tp" info "$out/scene.glb" --json | python3 -c \
   'import json, sys; print(",".join(m["name"] for m in json.load(sys.stdin)["material_list"]))')
-"${blender[@]}" -P "$here/cycles-pbr/compare_materials.py" -- "$out/cycles.exr" \
-  "$out/twinpath.exr" "$out/ids.exr" "$names" 2>/dev/null | grep '^|'
+"${blender[@]}" -P "$here/cycles-pbr/compare_materials.py" -- "$out/cycles_rgb.exr" \
+  "$out/twinpath_rgb.exr" "$out/ids.exr" "$names" 2>/dev/null | grep '^|'

@@ -40,3 +40,15 @@ print("|---|---|---|---|---|")
 for name, n, x, y, d in rows:
     print(f"| {name} | {n} | {x:.4f} | {y:.4f} | {d:+.1%} |")
 print(f"| whole image | {cyc.shape[0] * cyc.shape[1]} | {a:.4f} | {b:.4f} | {(b - a) / a:+.1%} |")
+# 32 x 32 tiles: the relative difference of their mean luminance, median and worst.
+h, w = cyc.shape[:2]
+tiles = []
+for y in range(0, h - 31, 32):
+    for x in range(0, w - 31, 32):
+        ta = (cyc[y:y + 32, x:x + 32, :3] @ lum).mean()
+        tb = (tw[y:y + 32, x:x + 32, :3] @ lum).mean()
+        if ta > 0:
+            tiles.append(abs(tb - ta) / ta)
+tiles.sort()
+print(f"| 32x32 tiles: median, worst abs difference | {len(tiles)} | | | "
+      f"{tiles[len(tiles) // 2]:.1%}, {tiles[-1]:.1%} |")
