@@ -119,9 +119,12 @@ inline float pbr_reflect_probability(Material m, float vh) {
 }
 
 // The probability of the diffuse lobe: its albedo estimate at wo (the Fresnel weights at
-// V.H = cos(theta_o)) against the microfacet lobes'.
+// V.H = cos(theta_o)) against the microfacet lobes'. Under total internal reflection at N the
+// estimate takes Schlick's cosine at cos_o itself: 1 - F(V.H) is not 0 for the other half
+// vectors, so the diffuse lobe that f has must keep a probability.
 inline float pbr_diffuse_probability(Material m, float cos_o) {
-    float fd = max3(pbr_dielectric_fresnel(m, pbr_fresnel_cosine(m, cos_o)));
+    float c = pbr_fresnel_cosine(m, cos_o);
+    float fd = max3(pbr_dielectric_fresnel(m, c < 0.0f ? cos_o : c));
     float rest = (1.0f - m.metallic) * (1.0f - fd) * average(m.kd);
     float d = rest * (1.0f - m.transmission);
     float s = (1.0f - m.metallic) * fd + m.metallic * average(pbr_metal_fresnel(m, cos_o)) +
