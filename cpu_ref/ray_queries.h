@@ -11,6 +11,9 @@
 
 namespace tp {
 
-ClosestHits closest_hits_cpu(const FlatScene& scene, const std::vector<Ray>& rays);
+// With FEATURE_ALPHA in `features`, a surface is there only where its alpha covers the hit
+// (shared/alpha.h), as in a render and in the GPU's ray queries.
+ClosestHits closest_hits_cpu(const FlatScene& scene, const std::vector<Ray>& rays,
+                             uint32_t features);
 
 } // namespace tp

@@ -254,7 +254,7 @@ std::vector<CaseResult> run_cases(const Size& s, const std::string& assets_dir,
 
 std::vector<CaseResult> watertight_cases_cpu(const Size& s, const std::string& assets_dir) {
     return run_cases(s, assets_dir, "cpu", "embree",
-                     [](const RaySet& rs) { return closest_hits_cpu(rs.scene, rs.rays); });
+                     [](const RaySet& rs) { return closest_hits_cpu(rs.scene, rs.rays, FEATURES_ALL); });
 }
 
 std::vector<CaseResult> watertight_cases_gpu(const VulkanContext& ctx, const Size& s,

@@ -3,6 +3,7 @@
 // consistent under `twinpath compare` (alpha 0.01); with the same seed they follow the same
 // paths with the same random numbers (shared/features.h promises the unrestricted result for
 // every input the mask admits), so they must agree to rounding.
+#include "shared/features.h"
 #include "support/test_paths.h"
 
 #include <catch2/catch.hpp>
@@ -35,7 +36,7 @@ TEST_CASE("CPU: the specialized path loop agrees with the all-features loop on e
             const nlohmann::json same = render("all_same_seed", "all", 11);
             CHECK(spec["features"]["variant"] == "scene");
             CHECK(all["features"]["variant"] == "all");
-            CHECK(all["features"]["mask"] == 1023);
+            CHECK(all["features"]["mask"] == tp::FEATURES_ALL);
             CHECK(spec["features"]["mask"].get<uint32_t>() != 1023u);
             CHECK(spec["nan_samples"] == 0);
             // The same paths: the same number of rays of every kind.

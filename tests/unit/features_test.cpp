@@ -34,9 +34,9 @@ TEST_CASE("every bundled scene has the features its file describes", "[features]
     //           0.5 as three instances of "ball"; a point and a directional light; a constant
     //           environment; nothing emissive.
     // Read from scenes/gltf_materials.gltf (docs/scene-format.md, "glTF materials"): every
-    //  material glTF's own BSDF (pbr), a base colour texture on the floor, opaque, no normal
-    //  map; an emissive panel and a directional KHR_lights_punctual sun; 11 spheres naming one
-    //  mesh's accessors.
+    //  material glTF's own BSDF (pbr); textures on the floor (with a normal map), the leaf and
+    //  the emissive panel; a leaf with alpha MASK and a pane with BLEND; an emissive panel, a
+    //  directional and a spot KHR_lights_punctual light; 11 spheres naming one mesh's accessors.
     struct Case {
         const char* name;
         uint32_t mask;
@@ -51,7 +51,8 @@ TEST_CASE("every bundled scene has the features its file describes", "[features]
         {"spheres", FEATURE_TEXTURES | FEATURE_PHONG_SPECULAR | FEATURE_MIRROR |
                         FEATURE_DIELECTRIC | FEATURE_POINT_LIGHTS | FEATURE_DIRECTIONAL_LIGHTS |
                         FEATURE_ENV_CONSTANT | FEATURE_INSTANCING},
-        {"gltf_materials", FEATURE_TEXTURES | FEATURE_PBR | FEATURE_EMISSIVE_TRIANGLES |
+        {"gltf_materials", FEATURE_TEXTURES | FEATURE_PBR | FEATURE_NORMAL_MAPS | FEATURE_ALPHA |
+                               FEATURE_EMISSIVE_TRIANGLES | FEATURE_POINT_LIGHTS |
                                FEATURE_DIRECTIONAL_LIGHTS | FEATURE_INSTANCING},
     };
     size_t bundled = 0;
