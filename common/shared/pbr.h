@@ -157,7 +157,10 @@ inline vec3 pbr_eval_local(Material m, vec3 wo, vec3 wi) {
         float vh = dot(wo, h);
         vec3 fd = pbr_dielectric_fresnel(m, pbr_fresnel_cosine(m, vh));
         vec3 f = ((1.0f - m.metallic) * (1.0f - max3(fd)) * (1.0f - m.transmission) * INV_PI) * m.kd;
-        if (!is_smooth) {
+        // chi+(H.V) of Appendix B's visibility: V.H > 0 for any two directions above the
+        // surface, but not in floats where both graze it and wo + wi nearly cancels, and the pdf
+        // (a visible normal) is 0 there.
+        if (!is_smooth && vh > 0.0f) {
             float spec = ggx_d(h, alpha) * ggx_visibility_correlated(wo, wi, alpha);
             f += ((1.0f - m.metallic) * fd + m.metallic * pbr_metal_fresnel(m, vh)) * spec;
         }
@@ -167,6 +170,7 @@ inline vec3 pbr_eval_local(Material m, vec3 wo, vec3 wi) {
     float weight = (1.0f - m.metallic) * m.transmission;
     if (!pbr_is_volume(m)) {
         vec3 h = pbr_thin_half_vector(wo, wi);
+        if (!(dot(wo, h) > 0.0f)) return vec3(0.0f); // chi+(H_T.V), as for the reflection
         float fd = max3(pbr_dielectric_fresnel(m, dot(wo, h)));
         float btdf = ggx_d(h, alpha) * ggx_visibility_separable(wo, wi, alpha);
         return (weight * (1.0f - fd) * btdf) * m.kd;
