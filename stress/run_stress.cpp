@@ -101,6 +101,7 @@ int run_stress(const StressOptions& o) {
         if (b == "cpu") {
             add(film_accumulation_cases(s));
             add(brdf_cases_cpp(s));
+            add(pbr_cases_cpp(s));
             add(watertight_cases_cpu(s, o.assets_dir));
             if (!o.self.empty())
                 add({nan_vertex_case(o.self, (fs::path(o.out_dir) / "tmp").string())});
@@ -137,6 +138,7 @@ int run_stress(const StressOptions& o) {
                     const VulkanContext ctx(o.device, v.mode);
                     if (v.mode == VkMode::compute) {
                         add(brdf_cases_glsl(ctx, s));
+                        add(pbr_cases_glsl(ctx, s));
                         add(watertight_cases_gpu(ctx, s, o.assets_dir));
                     } else {
                         add(watertight_cases_pipeline(ctx, s, o.assets_dir));

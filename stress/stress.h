@@ -88,6 +88,10 @@ std::vector<CaseResult> film_accumulation_cases(const Size& s); // the double fi
 // The BRDF sweep of the C++ functions, and of the same functions compiled as GLSL on `ctx`.
 std::vector<CaseResult> brdf_cases_cpp(const Size& s);
 std::vector<CaseResult> brdf_cases_glsl(const VulkanContext& ctx, const Size& s);
+// The glTF material's sweep (roughness at the smooth limit, grazing views, degenerate normal
+// maps; pbr_cases.cpp) in C++, and compiled as GLSL on `ctx`.
+std::vector<CaseResult> pbr_cases_cpp(const Size& s);
+std::vector<CaseResult> pbr_cases_glsl(const VulkanContext& ctx, const Size& s);
 
 // Rays aimed exactly at the shared edges and vertices of closed meshes: the icosphere, and the
 // bunny when `assets_dir` holds it (skipped otherwise). CPU: Embree; GPU: the compute mode's

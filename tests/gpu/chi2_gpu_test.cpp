@@ -1,9 +1,10 @@
 // The chi-square sampling tests of tests/chi2/, repeated with the samples drawn on the GPU by
 // the shared samplers in a compute shader (sample_draws.comp) from the renderer's own random
 // numbers, and judged by the same harness (tests/support/chi2.h) at the same Sidak-corrected
-// level (tests/chi2/suite.h; the same 26 tests).
+// level (tests/chi2/suite.h; the same tests, the glTF material's on a subset of its cases).
 #include "chi2/direction_at.h"
 #include "chi2/lights.h"
+#include "chi2/pbr_cases.h"
 #include "chi2/suite.h"
 #include "gpu_harness.h"
 #include "shaders/draw_ids.h"
@@ -11,6 +12,7 @@
 #include "sample_draws.spv.h"
 
 #include "shared/brdf.h"
+#include "shared/pbr.h"
 #include "shared/sampling.h"
 
 #include <fmt/format.h>
@@ -220,5 +222,32 @@ TEST_CASE("GPU: light sampling and alias tables follow their distributions", "[g
     for (size_t i = 0; i < w.size(); ++i)
         w[i] = std::pow(10.0, 4.0 * double((i * 389) % 1000) / 1000.0);
     alias_test("GPU alias table, 1000 weights", w, 802);
+    CHECK(tp::test::validation_messages() == 0);
+}
+
+TEST_CASE("GPU: glTF material sampling follows pbr_pdf", "[gpu]") {
+    // pbr_cases.h's cases marked on_gpu: a Dirac sample or no direction is a failed draw, as on
+    // the CPU; the pdf is the C++ pbr_pdf.
+    uint32_t seed = 1100;
+    int ran = 0;
+    for (const PbrCase& c : pbr_cases()) {
+        ++seed;
+        if (!c.on_gpu) continue;
+        ++ran;
+        const tp::Material m = tp::test::pbr::to_material(c.p);
+        const tp::vec3 n = c.n(), wo = c.wo();
+        tp::DrawParams p{};
+        p.f[0] = tp::vec4(m.kd, m.metallic);
+        p.f[1] = tp::vec4(m.ks, m.roughness);
+        p.f[2] = tp::vec4(n, m.transmission);
+        p.f[3] = tp::vec4(wo, m.specular);
+        p.f[4] = tp::vec4(m.ior, 0.0f, 0.0f, 0.0f);
+        p.u = tp::uvec4(m.flags, 0u, 0u, 0u);
+        const Result r = test_directions(
+            c.chart(), directions(draw(tp::DRAW_PBR, p, {}, seed)),
+            [&](const glm::dvec3& w) { return double(tp::pbr_pdf(m, n, wo, tp::vec3(w))); });
+        check_accepted(fmt::format("GPU glTF {}", c.name).c_str(), r);
+    }
+    CHECK(ran >= 10);
     CHECK(tp::test::validation_messages() == 0);
 }

@@ -106,6 +106,51 @@ void bsdf_directions(InputGen& g, FnIn& x) {
     x.f[5] = vec4(g.uni(), g.uni(), g.uni(), 0.0f);
 }
 
+// A GGX width: the smooth limit's 1e-4 up to 1, log-uniform, with both ends.
+float ggx_alpha(InputGen& g) {
+    const float r = g.uni();
+    return r < 0.05f ? 1e-4f : r < 0.1f ? 1.0f : g.log_uniform(1e-4f, 1.0f);
+}
+
+// A glTF material (fn_pbr_material): roughness 0, around the smooth limit 0.01 and up to 1,
+// metallic and transmission at 0, 1 and between, a clamped coloured f0, volumes met from
+// outside and inside, attenuation or none.
+void pbr_material(InputGen& g, FnIn& x) {
+    const float r = g.uni();
+    const float roughness = r < 0.1f    ? 0.0f
+                            : r < 0.15f ? 0.0099f
+                            : r < 0.2f  ? 0.0101f
+                            : r < 0.25f ? 1.0f
+                                        : g.log_uniform(0.01f, 1.0f);
+    const float m = g.uni();
+    const float metallic = m < 0.3f ? 0.0f : m < 0.45f ? 1.0f : g.uni();
+    const float t = g.uni();
+    const float transmission = t < 0.4f ? 0.0f : t < 0.7f ? 1.0f : g.uni();
+    const bool volume = g.chance(0.4f);
+    float ior = g.uniform(1.0f, 3.0f);
+    if (volume && g.chance(0.5f)) ior = 1.0f / ior;
+    set3(x, 6, g.color(1.0f), metallic);
+    set3(x, 7, g.chance(0.7f) ? vec3(1.0f) : g.color(4.0f), roughness);
+    x.f[8] = vec4(ior, transmission, g.chance(0.7f) ? 1.0f : g.uni(),
+                  g.chance(0.3f) ? FLOAT_MAX : g.log_uniform(1e-3f, 1e3f));
+    set3(x, 9, g.color(1.0f));
+    x.u.x = volume ? MATERIAL_FLAG_VOLUME : 0u;
+}
+
+// n f2, wo f3, wi f4, u f5 as for the Phong functions, with wi also near the thin-walled
+// transmission's lobe (-wo) and wo down to 1e-4 of the horizon.
+void pbr_directions(InputGen& g, FnIn& x) {
+    bsdf_directions(g, x);
+    const vec3 n = vec3(x.f[2]);
+    if (g.chance(0.2f)) {
+        const vec3 t = glm::normalize(g.unit() - n * glm::dot(g.unit(), n));
+        const float c = g.log_uniform(1e-4f, 0.1f);
+        if (std::isfinite(t.x)) set3(x, 3, glm::normalize(c * n + std::sqrt(1.0f - c * c) * t));
+    }
+    if (g.chance(0.25f))
+        set3(x, 4, glm::normalize(-vec3(x.f[3]) + g.box(g.log_uniform(1e-4f, 0.5f))));
+}
+
 } // namespace
 
 void make_input(uint32_t id, InputGen& g, FnIn& x) {
@@ -467,6 +512,98 @@ void make_input(uint32_t id, InputGen& g, FnIn& x) {
         set3(x, 2, a);
         set3(x, 3, b);
         set3(x, 4, c);
+        break;
+    }
+    case FN_GGX_D:
+        // Microfacet normals around the pole, where D's peak is, and anywhere.
+        set3(x, 0,
+             g.chance(0.5f)
+                 ? glm::normalize(vec3(0.0f, 0.0f, 1.0f) + g.box(g.log_uniform(1e-5f, 1.0f)))
+                 : n,
+             ggx_alpha(g));
+        break;
+    case FN_GGX_G1:
+    case FN_GGX_VISIBILITY_CORRELATED:
+    case FN_GGX_VISIBILITY_SEPARABLE:
+        set3(x, 0, g.chance(0.2f) ? glm::normalize(vec3(n.x, n.y, g.uniform(-1e-3f, 1e-3f))) : n,
+             ggx_alpha(g));
+        set3(x, 1, g.unit());
+        break;
+    case FN_GGX_SAMPLE_VISIBLE_NORMAL:
+    case FN_GGX_VISIBLE_NORMAL_PDF: {
+        // v above the surface, down to 1e-4 of the horizon; h from the sampler or anywhere.
+        vec3 v = g.towards(vec3(0.0f, 0.0f, 1.0f));
+        if (g.chance(0.2f)) v = glm::normalize(vec3(v.x, v.y, g.log_uniform(1e-4f, 1e-2f)));
+        const float alpha = ggx_alpha(g);
+        set3(x, 0, v, alpha);
+        if (id == FN_GGX_SAMPLE_VISIBLE_NORMAL)
+            x.f[1] = vec4(g.uni(), g.uni(), 0.0f, 0.0f);
+        else
+            set3(x, 1,
+                 g.chance(0.7f) ? ggx_sample_visible_normal(v, alpha, vec2(g.uni(), g.uni()))
+                                : g.unit());
+        break;
+    }
+    case FN_PBR_EVAL:
+    case FN_PBR_PDF:
+    case FN_PBR_SAMPLE:
+        pbr_material(g, x);
+        pbr_directions(g, x);
+        break;
+    case FN_PBR_DIELECTRIC_FRESNEL:
+        pbr_material(g, x);
+        x.f[0].x = g.chance(0.1f) ? -1.0f : g.chance(0.1f) ? 1.0f : g.uni();
+        break;
+    case FN_PBR_VOLUME_TRANSMITTANCE:
+        pbr_material(g, x);
+        if (g.chance(0.1f)) x.f[9].x = 0.0f;
+        x.f[0].x = g.chance(0.1f) ? 0.0f : g.log_uniform(1e-4f, 1e3f);
+        break;
+    case FN_ALPHA_BLEND_THRESHOLD:
+    case FN_ALPHA_COVERS:
+        set3(x, 0, g.box(g.log_uniform(1e-3f, 1e4f)));
+        set3(x, 1, n);
+        x.u = uvec4(g.below(1000), g.u32(), g.below(3), 0u);
+        x.f[2] = vec4(g.chance(0.2f) ? float(g.below(2)) : g.uni(), g.uni(), 0.0f, 0.0f);
+        break;
+    case FN_SRGB_TO_LINEAR:
+        x.f[0].x = g.chance(0.2f) ? float(g.below(256)) / 255.0f : g.uni();
+        if (g.chance(0.05f)) x.f[0].x = 0.04045f;
+        break;
+    case FN_UNPACK_RGBA8:
+    case FN_UNPACK_RGBA16:
+        x.u = uvec4(g.u32(), g.u32(), 0u, 0u);
+        break;
+    case FN_SURFACE_APPLY_NORMAL_MAP: {
+        // A shading normal, a tangent (unit, scaled, nearly parallel to the normal, or zero), a
+        // bitangent on either side, and a texel: any, the flat (0.5, 0.5, 1), the zero vector's
+        // (0.5, 0.5, 0.5), or bent below the surface; scale 0 to 2.
+        set3(x, 0, n);
+        const float k = g.uni();
+        const vec3 t = k < 0.05f  ? vec3(0.0f)
+                       : k < 0.1f ? n * g.uniform(0.5f, 2.0f) + g.box(1e-4f)
+                                  : g.unit() * g.log_uniform(0.1f, 10.0f);
+        set3(x, 1, t);
+        set3(x, 2, glm::cross(n, t) * (g.chance(0.5f) ? 1.0f : -1.0f) + g.box(0.1f));
+        const float c = g.uni();
+        const vec3 texel = c < 0.1f    ? vec3(0.5f, 0.5f, 1.0f)
+                           : c < 0.2f  ? vec3(0.5f)
+                           : c < 0.35f ? vec3(g.uni(), g.uni(), g.uniform(0.0f, 0.5f))
+                                       : g.color(1.0f);
+        set3(x, 3, texel, g.uniform(0.0f, 2.0f));
+        break;
+    }
+    case FN_SPOT_LIGHT_FALLOFF: {
+        // KHR_lights_punctual's cone angles: 0 <= inner < outer <= pi / 2.
+        const float outer = g.uniform(1e-3f, 1.5707963f);
+        const float inner = g.chance(0.2f) ? outer * (1.0f - 1e-4f) : g.uniform(0.0f, outer);
+        const float scale = 1.0f / std::max(1e-3f, std::cos(inner) - std::cos(outer));
+        set3(x, 7, n);
+        set3(x, 8, vec3(scale, -std::cos(outer) * scale, 0.0f));
+        x.u.y = LIGHT_SPOT;
+        // wi from the light's position to the point: -wi near the axis half of the time.
+        const float spread = g.log_uniform(1e-3f, 2.0f * outer + 1e-3f);
+        set3(x, 0, glm::normalize(-(n + g.box(spread))));
         break;
     }
     default:

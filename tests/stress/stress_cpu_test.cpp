@@ -44,6 +44,10 @@ TEST_CASE("stress: Phong extremes in C++", "[stress]") {
     require_all(brdf_cases_cpp(small_size()));
 }
 
+TEST_CASE("stress: glTF material extremes in C++", "[stress]") {
+    require_all(pbr_cases_cpp(small_size()));
+}
+
 // The IOR 3 furnaces pass since their verdict accepts paths cut at the depth cap
 // (render_cases.cpp, expect_escape_or_cut). Touching cubes pass since flatten() merges their
 // shared faces into one interface (scene/dielectric_interfaces.h); before, 23 % off.

@@ -58,6 +58,11 @@ TEST_CASE("stress GPU: Phong extremes in GLSL", "[stress][gpu]") {
     CHECK(context().instance().validation_messages() == 0);
 }
 
+TEST_CASE("stress GPU: glTF material extremes in GLSL", "[stress][gpu]") {
+    require_all(pbr_cases_glsl(context(), small_size()));
+    CHECK(context().instance().validation_messages() == 0);
+}
+
 TEST_CASE("stress GPU: scale in compute mode", "[stress][gpu]") {
     require_all(scale_cases(gpu(), gpu_size()));
 }

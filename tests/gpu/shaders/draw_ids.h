@@ -17,9 +17,13 @@ const uint DRAW_DIELECTRIC = 6u;     // ior f0.w, n f2, wo f3
 const uint DRAW_TRIANGLE_LIGHT = 7u; // (p0, area) f0, p1 f1, p2 f2, shading point f3
 const uint DRAW_ENV_MAP = 8u;        // rotation f0.x, width u.x, height u.y; table: pixels
 const uint DRAW_ALIAS = 9u;          // table: the alias table
+// The glTF material (pbr_sample): (base colour, metallic) f0, (specular colour, roughness) f1,
+// (n, transmission) f2, (wo, specular) f3, ior f4.x, flags u.x. x = 0 marks a draw that gave
+// no direction or a Dirac lobe.
+const uint DRAW_PBR = 10u;
 
 struct DrawParams {
-    vec4 f[4];
+    vec4 f[6];
     uvec4 u;
 };
 

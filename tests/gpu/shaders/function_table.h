@@ -5,13 +5,16 @@
 #ifndef TP_TESTS_FUNCTION_TABLE_H
 #define TP_TESTS_FUNCTION_TABLE_H
 
+#include "shared/alpha.h"
 #include "shared/brdf.h"
 #include "shared/camera.h"
 #include "shared/intersect.h"
 #include "shared/lights.h"
 #include "shared/math.h"
+#include "shared/microfacet.h"
 #include "shared/offset.h"
 #include "shared/path.h"
+#include "shared/pbr.h"
 #include "shared/rng.h"
 #include "shared/roulette.h"
 #include "shared/sampling.h"
@@ -122,7 +125,25 @@ const uint FN_LAINE_KARRAS_PERMUTATION = 86u;
 const uint FN_NESTED_UNIFORM_SCRAMBLE = 87u;
 const uint FN_SOBOL_DIM1 = 88u;
 const uint FN_RNG_GROUP_FIRST = 89u;
-const uint FN_COUNT = 90u;
+const uint FN_GGX_D = 90u;
+const uint FN_GGX_G1 = 91u;
+const uint FN_GGX_VISIBILITY_CORRELATED = 92u;
+const uint FN_GGX_VISIBILITY_SEPARABLE = 93u;
+const uint FN_GGX_SAMPLE_VISIBLE_NORMAL = 94u;
+const uint FN_GGX_VISIBLE_NORMAL_PDF = 95u;
+const uint FN_PBR_EVAL = 96u;
+const uint FN_PBR_PDF = 97u;
+const uint FN_PBR_SAMPLE = 98u;
+const uint FN_PBR_DIELECTRIC_FRESNEL = 99u;
+const uint FN_PBR_VOLUME_TRANSMITTANCE = 100u;
+const uint FN_ALPHA_BLEND_THRESHOLD = 101u;
+const uint FN_ALPHA_COVERS = 102u;
+const uint FN_SRGB_TO_LINEAR = 103u;
+const uint FN_UNPACK_RGBA8 = 104u;
+const uint FN_UNPACK_RGBA16 = 105u;
+const uint FN_SURFACE_APPLY_NORMAL_MAP = 106u;
+const uint FN_SPOT_LIGHT_FALLOFF = 107u;
+const uint FN_COUNT = 108u;
 
 // ---- argument unpacking ----------------------------------------------------------------------
 inline vec3 fn3(FnIn x, uint i) {
@@ -145,6 +166,38 @@ inline Material fn_material(FnIn x) {
     m.ior = x.f[1].w;
     m.tf = fn3(x, 6u);
     m.type = x.u.x;
+    return m;
+}
+
+// A glTF material (MATERIAL_PBR, no textures): (base colour, metallic) f6, (specular colour,
+// roughness) f7, (ior, transmission, specular, attenuation distance) f8, attenuation colour f9,
+// flags u.x.
+inline Material fn_pbr_material(FnIn x) {
+    Material m;
+    m.kd = fn3(x, 6u);
+    m.kd_texture = NO_TEXTURE;
+    m.ks = fn3(x, 7u);
+    m.ns = 1.0f;
+    m.ke = vec3(0.0f);
+    m.ior = x.f[8].x;
+    m.tf = fn3(x, 9u);
+    m.type = MATERIAL_PBR;
+    m.metallic = x.f[6].w;
+    m.roughness = x.f[7].w;
+    m.transmission = x.f[8].y;
+    m.specular = x.f[8].z;
+    m.alpha = 1.0f;
+    m.alpha_cutoff = 0.5f;
+    m.alpha_mode = ALPHA_OPAQUE;
+    m.attenuation_distance = x.f[8].w;
+    m.metallic_roughness_texture = NO_TEXTURE;
+    m.normal_texture = NO_TEXTURE;
+    m.emissive_texture = NO_TEXTURE;
+    m.transmission_texture = NO_TEXTURE;
+    m.specular_texture = NO_TEXTURE;
+    m.specular_color_texture = NO_TEXTURE;
+    m.normal_scale = 1.0f;
+    m.flags = x.u.x;
     return m;
 }
 
@@ -597,6 +650,71 @@ inline FnOut run_function(uint id, FnIn x) {
         fn_put3(o, 0u, tuv);
         break;
     }
+    case FN_GGX_D:
+        o.f[0].x = ggx_d(a, x.f[0].w);
+        break;
+    case FN_GGX_G1:
+        o.f[0].x = ggx_g1(a, x.f[0].w);
+        break;
+    case FN_GGX_VISIBILITY_CORRELATED:
+        o.f[0].x = ggx_visibility_correlated(a, b, x.f[0].w);
+        break;
+    case FN_GGX_VISIBILITY_SEPARABLE:
+        o.f[0].x = ggx_visibility_separable(a, b, x.f[0].w);
+        break;
+    case FN_GGX_SAMPLE_VISIBLE_NORMAL:
+        fn_put3(o, 0u, ggx_sample_visible_normal(a, x.f[0].w, vec2(b.x, b.y)));
+        break;
+    case FN_GGX_VISIBLE_NORMAL_PDF:
+        o.f[0].x = ggx_visible_normal_pdf(a, b, x.f[0].w);
+        break;
+    case FN_PBR_EVAL:
+        fn_put3(o, 0u, pbr_eval(fn_pbr_material(x), c, d, e));
+        break;
+    case FN_PBR_PDF:
+        o.f[0].x = pbr_pdf(fn_pbr_material(x), c, d, e);
+        break;
+    case FN_PBR_SAMPLE:
+        fn_put_bsdf(o, pbr_sample(fn_pbr_material(x), c, d, x.f[5].x, vec2(x.f[5].y, x.f[5].z)));
+        break;
+    case FN_PBR_DIELECTRIC_FRESNEL:
+        fn_put3(o, 0u, pbr_dielectric_fresnel(fn_pbr_material(x), a.x));
+        break;
+    case FN_PBR_VOLUME_TRANSMITTANCE:
+        fn_put3(o, 0u, pbr_volume_transmittance(fn_pbr_material(x), a.x));
+        break;
+    case FN_ALPHA_BLEND_THRESHOLD:
+        o.f[0].x = alpha_blend_threshold(a, b, x.u.x, x.u.y);
+        break;
+    case FN_ALPHA_COVERS:
+        o.u.x = fn_bool(alpha_covers(x.u.z, c.x, c.y, a, b, x.u.x, x.u.y));
+        break;
+    case FN_SRGB_TO_LINEAR:
+        o.f[0].x = srgb_to_linear(a.x);
+        break;
+    case FN_UNPACK_RGBA8:
+        o.f[0] = unpack_rgba8(x.u.x);
+        break;
+    case FN_UNPACK_RGBA16:
+        o.f[0] = unpack_rgba16(x.u.x, x.u.y);
+        break;
+    case FN_SURFACE_APPLY_NORMAL_MAP: {
+        SurfacePoint s;
+        s.p = vec3(0.0f);
+        s.p_error = vec3(0.0f);
+        s.ng = a;
+        s.ns = a;
+        s.uv = vec2(0.0f);
+        s.uv1 = vec2(0.0f);
+        s.tangent = b;
+        s.bitangent = c;
+        surface_apply_normal_map(s, d, x.f[3].w);
+        fn_put3(o, 0u, s.ns);
+        break;
+    }
+    case FN_SPOT_LIGHT_FALLOFF:
+        o.f[0].x = spot_light_falloff(fn_light(x), a);
+        break;
     default:
         o.u = uvec4(0xFFFFFFFFu);
         break;

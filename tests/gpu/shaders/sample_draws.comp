@@ -2,12 +2,13 @@
 // Draws samples on the GPU for the chi-square tests: invocation i takes the renderer's own
 // random numbers for (seed, i) and calls one sampler of the shared headers, writing the
 // direction (xyz, w = 1) or point (xy, w = 1), or w = 0 for a failed draw. Dielectric: x = 1
-// for reflection; alias table: x = the chosen index.
+// for reflection; alias table: x = the chosen index; glTF material: w = 0 also for a Dirac lobe.
 #extension GL_GOOGLE_include_directive : require
 #extension GL_EXT_scalar_block_layout : require
 
 #include "shared/brdf.h"
 #include "shared/lights.h"
+#include "shared/pbr.h"
 #include "shared/rng.h"
 #include "shared/sampling.h"
 #include "draw_ids.h"
@@ -84,6 +85,36 @@ void main() {
         uint slot = alias_slot_from_bits(rng_get_bits(key, 0u), push.table_size);
         AliasEntry e = table[slot];
         r = vec4(float(alias_resolve(slot, e.prob, e.alias, u.y)), 0.0f, 0.0f, 1.0f);
+        break;
+    }
+    case DRAW_PBR: {
+        Material m;
+        m.kd = f3(0u);
+        m.kd_texture = NO_TEXTURE;
+        m.ks = f3(1u);
+        m.ns = 1.0f;
+        m.ke = vec3(0.0f);
+        m.ior = p.f[4].x;
+        m.tf = vec3(1.0f);
+        m.type = MATERIAL_PBR;
+        m.metallic = p.f[0].w;
+        m.roughness = p.f[1].w;
+        m.transmission = p.f[2].w;
+        m.specular = p.f[3].w;
+        m.alpha = 1.0f;
+        m.alpha_cutoff = 0.5f;
+        m.alpha_mode = ALPHA_OPAQUE;
+        m.attenuation_distance = FLOAT_MAX;
+        m.metallic_roughness_texture = NO_TEXTURE;
+        m.normal_texture = NO_TEXTURE;
+        m.emissive_texture = NO_TEXTURE;
+        m.transmission_texture = NO_TEXTURE;
+        m.specular_texture = NO_TEXTURE;
+        m.specular_color_texture = NO_TEXTURE;
+        m.normal_scale = 1.0f;
+        m.flags = p.u.x;
+        BsdfSample b = pbr_sample(m, f3(2u), f3(3u), u.x, u.yz);
+        if (b.lobe != LOBE_NONE && (b.lobe & LOBE_SPECULAR) == 0u) r = vec4(b.wi, 1.0f);
         break;
     }
     default:

@@ -1,0 +1,49 @@
+// The glTF material's furnace, shared by the CPU render test
+// (tests/integration/pbr_furnace_test.cpp) and the Vulkan one (tests/gpu/pbr_render_test.cpp): a
+// flat surface under a constant white environment, rendered at max depth 1, shows its directional
+// albedo. The scene is a JSON file as a user writes it (docs/scene-format.md): a quad 2000 m wide
+// with a `"type": "pbr"` material, a camera 10 m away with a field of view of 0.5 degrees looking
+// at its centre from `view_degrees` off the normal (its pixels see the surface within 0.25 degrees
+// of that angle), environment radiance 1 and no roulette. With max depth 1 a path is the camera
+// ray, next-event estimation to the environment and one BSDF-sampled ray that escapes (MIS between
+// them), so a pixel's expectation is the integral of f |cos| over the sphere: the albedo (plus the
+// Dirac lobes' weights in the smooth limit); transmitted light escapes below the quad and sees
+// radiance 1 too. The expected value is pbr_reference.h's quadrature.
+#pragma once
+
+#include "support/pbr_reference.h"
+
+#include <string>
+#include <vector>
+
+namespace tp::test::pbr {
+
+struct FurnaceCase {
+    std::string name;
+    Params p;            // the material as the path meets it (ior relative, 1/ior from inside)
+    double view_degrees; // the camera's angle from the surface normal
+    bool from_below;     // the camera under the quad: a volume boundary met from inside
+    bool on_gpu; // also in the Vulkan test (a subset: lavapipe builds a pipeline per render)
+
+    // Light arrives through the surface, and next-event estimation samples the environment
+    // below it. Open: integrator.h weighs such a light sample by dot(ns, wi) < 0, so that its
+    // contribution is subtracted; these cases are checked by [!shouldfail] test cases until it
+    // is fixed.
+    bool transmits() const { return p.transmission > 0.0 && p.metallic < 1.0; }
+};
+
+std::vector<FurnaceCase> furnace_cases();
+
+// Writes the scene of case c into dir and returns its path.
+std::string write_furnace_scene(const FurnaceCase& c, const std::string& dir);
+
+// The view direction of case c in the surface's local frame (N = +z).
+glm::dvec3 furnace_view(const FurnaceCase& c);
+
+struct ImageMean {
+    glm::dvec3 mean{0.0};
+    glm::dvec3 se{0.0}; // from the film's variance of each pixel mean (pixels are independent)
+};
+ImageMean image_mean(const std::string& exr_path);
+
+} // namespace tp::test::pbr
