@@ -4,11 +4,13 @@
 //     device offers it (not lavapipe), in pipeline mode; the expectation and the tolerance as in
 //     tests/integration/pbr_furnace_test.cpp (4 SE + 0.5 %), with 256 samples per pixel, on the
 //     cases marked on_gpu (lavapipe builds a pipeline for each render: seconds);
-//   - path logs: a PBR scene's vertices record the material as the path met it, textures applied
-//     (base_color, roughness, metallic, transmission, alpha), on both engines, and pathdiff finds
-//     the CPU's and compute mode's paths identical within tolerance;
-//   - AOVs: the pbr.roughness and pbr.metallic layers hold the textured values and agree between
-//     the engines under compare --exact.
+//   - path logs: a PBR scene's vertices record the material as the path met it (base_color,
+//     roughness, metallic, transmission, alpha) on both engines, and pathdiff finds the CPU's and
+//     compute mode's paths identical within tolerance;
+//   - AOVs: the pbr.roughness and pbr.metallic layers hold those values and agree between the
+//     engines under compare --exact.
+// The scene is untextured here (lavapipe compiles the debug variant of a textured one in a
+// minute); tests/integration/pbr_debug_test.cpp checks the textured values on the CPU.
 // Two open cases, as [!shouldfail] test cases: the furnace through the surface (next-event
 // estimation's cosine sign, pbr_furnace.h) and alpha BLEND's coverage, which the two engines
 // decide differently for the same path.
@@ -30,37 +32,6 @@ std::string auto_mode() {
     const ProcessResult r = run(twinpath("info --json"));
     REQUIRE(r.exit_code == 0);
     return nlohmann::json::parse(r.out)["backends"]["vulkan"]["devices"][0]["auto_mode"];
-}
-
-// A small PBR scene: a floor whose metallic-roughness texture is a checker (G: roughness x 0.8
-// or 0.2, B: metallic x 0.5 or 0.1), transmission 0.3 and alpha 0.6 (masked at the default
-// cutoff 0.5: there; or blended), under a rough gold ball, a point light and a dim environment.
-std::string write_pbr_scene(const std::string& dir, const char* alpha_mode = "mask") {
-    nlohmann::json scene = nlohmann::json::parse(R"({
-      "camera": { "eye": [0, 2.5, 3], "target": [0, 0.3, 0], "fov": 40 },
-      "film": { "width": 16, "height": 16 },
-      "render": { "spp": 4, "max_depth": 4, "min_depth": 2 },
-      "textures": { "mr": { "generator": "checker", "size": 64, "checks": 4,
-                            "colors": [[0.9, 0.8, 0.5], [0.9, 0.2, 0.1]] } },
-      "materials": {
-        "floor": { "type": "pbr", "base_color": [0.2, 0.4, 0.6], "metallic": 0.25,
-                   "roughness": 0.45, "transmission": 0.3, "alpha": 0.6, "alpha_mode": "blend",
-                   "metallic_roughness_texture": "mr" },
-        "ball": { "type": "pbr", "base_color": [0.9, 0.7, 0.3], "metallic": 1, "roughness": 0.3 }
-      },
-      "meshes": { "plane": { "type": "quad" }, "sphere": { "type": "sphere", "subdivisions": 3 } },
-      "objects": [
-        { "mesh": "plane", "material": "floor", "transform": { "scale": 3 } },
-        { "mesh": "sphere", "material": "ball",
-          "transform": { "translate": [0, 0.5, 0], "scale": 0.5 } }
-      ],
-      "lights": [ { "type": "point", "position": [1, 3, 1], "intensity": [5, 5, 5] } ],
-      "environment": { "type": "constant", "radiance": [0.3, 0.3, 0.3] }
-    })");
-    scene["materials"]["floor"]["alpha_mode"] = alpha_mode;
-    const std::string path = dir + "/pbr_scene_" + alpha_mode + ".json";
-    std::ofstream(path) << scene.dump(2);
-    return path;
 }
 
 } // namespace
@@ -129,83 +100,12 @@ void logged_render(const std::string& scene, const std::string& backend, const s
     REQUIRE(r.exit_code == 0);
 }
 
-// Checks the material fields of every hit in a path log: the floor's roughness and metallic
-// through the checker's G and B (0.45 x 0.8 or 0.2, 0.25 x 0.5 or 0.1; blends between at the
-// checks' edges), its transmission and alpha; the ball's factors as given.
-void check_logged_materials(const std::string& log) {
-    INFO(log);
-    size_t floor_hits = 0, ball_hits = 0;
-    const nlohmann::json j = read_json(log);
-    for (const auto& path : j["paths"])
-        for (const auto& v : path["vertices"]) {
-            if (v["event"] != "hit") continue;
-            const double r = v["roughness"], m = v["metallic"];
-            const double t = v["transmission"], al = v["alpha"];
-            const std::vector<double> bc = v["base_color"];
-            // The ball is the only metal (material indices follow the loader's order).
-            if (m < 0.99) {
-                ++floor_hits;
-                CHECK(r >= 0.45 * 0.2 - 1e-6);
-                CHECK(r <= 0.45 * 0.8 + 1e-6);
-                CHECK(m >= 0.25 * 0.1 - 1e-6);
-                CHECK(m <= 0.25 * 0.5 + 1e-6);
-                CHECK(t == Approx(0.3f));
-                CHECK(al == Approx(0.6f));
-                CHECK_THAT(bc, Catch::Approx(std::vector<double>{0.2, 0.4, 0.6}).epsilon(1e-6));
-            } else {
-                ++ball_hits;
-                CHECK(r == Approx(0.3f));
-                CHECK(m == Approx(1.0f));
-                CHECK(t == 0.0);
-                CHECK(al == 1.0);
-                CHECK_THAT(bc, Catch::Approx(std::vector<double>{0.9, 0.7, 0.3}).epsilon(1e-6));
-            }
-        }
-    CHECK(floor_hits >= 8); // every camera ray of the logged pixel stops on the floor
-    CHECK(ball_hits > 0);
-}
-
-// The AOV layers of a render of the PBR scene: pbr.roughness and pbr.metallic hold the floor's
-// textured values (both checks in view) and the ball's factors, 0 where nothing is hit.
-void check_aovs(const std::string& exr) {
-    INFO(exr);
-    const ExrImage img = read_exr(exr);
-    REQUIRE(img.channels.count("pbr.roughness"));
-    REQUIRE(img.channels.count("pbr.metallic"));
-    const std::vector<float>& mat = img.channels.at("id.material");
-    const std::vector<float>& r = img.channels.at("pbr.roughness");
-    const std::vector<float>& m = img.channels.at("pbr.metallic");
-    size_t floor = 0, ball = 0, low = 0, high = 0;
-    for (size_t i = 0; i < mat.size(); ++i) {
-        if (mat[i] >= 0.0f && m[i] < 0.99f) {
-            ++floor;
-            CHECK(r[i] >= 0.45f * 0.2f - 1e-6f);
-            CHECK(r[i] <= 0.45f * 0.8f + 1e-6f);
-            CHECK(m[i] >= 0.25f * 0.1f - 1e-6f);
-            CHECK(m[i] <= 0.25f * 0.5f + 1e-6f);
-            low += r[i] < 0.2f;
-            high += r[i] > 0.3f;
-        } else if (mat[i] >= 0.0f) {
-            ++ball;
-            CHECK(r[i] == Approx(0.3f));
-            CHECK(m[i] == Approx(1.0f));
-        } else {
-            CHECK(r[i] == 0.0f);
-            CHECK(m[i] == 0.0f);
-        }
-    }
-    CHECK(floor > 20);
-    CHECK(ball > 10);
-    CHECK(low > 0);
-    CHECK(high > 0);
-}
-
 } // namespace
 
 TEST_CASE("a PBR scene's path logs and AOVs record its material fields alike on both engines",
           "[gpu][pbr]") {
     const std::string dir = temp_dir("pbr-debug");
-    const std::string scene = write_pbr_scene(dir);
+    const std::string scene = pbr::write_debug_scene(dir, false, "mask");
     // A floor pixel: its paths go on to the ball and the floor.
     logged_render(scene, "cpu", dir + "/cpu", 3, 13);
     logged_render(scene, "vulkan", dir + "/vk", 3, 13);
@@ -215,14 +115,17 @@ TEST_CASE("a PBR scene's path logs and AOVs record its material fields alike on 
     CHECK(d.exit_code == 0);
     CHECK_THAT(d.out, Catch::Contains("identical within tolerance: 8 paths"));
     CHECK(read_json(dir + "/cpu.json")["paths"].size() == 8);
-    check_logged_materials(dir + "/cpu.json");
-    check_logged_materials(dir + "/vk.json");
+    for (const char* log : {"/cpu.json", "/vk.json"}) {
+        const auto [floor_hits, ball_hits] = pbr::check_debug_log(dir + log, false);
+        CHECK(floor_hits >= 8); // every camera ray of the pixel stops on the floor
+        CHECK(ball_hits > 0);
+    }
     const ProcessResult same = run(twinpath(fmt::format(
         "compare --exact {} {}", shell_quote(dir + "/cpu.exr"), shell_quote(dir + "/vk.exr"))));
     INFO(same.out);
     CHECK(same.exit_code == 0);
-    check_aovs(dir + "/cpu.exr");
-    check_aovs(dir + "/vk.exr");
+    pbr::check_debug_aovs(dir + "/cpu.exr", false);
+    pbr::check_debug_aovs(dir + "/vk.exr", false);
 }
 
 // Open: alpha BLEND keeps a surface where alpha > alpha_blend_threshold(ray origin, ray
@@ -238,7 +141,7 @@ TEST_CASE("a PBR scene's path logs and AOVs record its material fields alike on 
 TEST_CASE("alpha BLEND: same-seed renders of a blended surface agree on both engines (open)",
           "[gpu][pbr][!shouldfail]") {
     const std::string dir = temp_dir("pbr-blend");
-    const std::string scene = write_pbr_scene(dir, "blend");
+    const std::string scene = pbr::write_debug_scene(dir, false, "blend");
     for (const char* backend : {"cpu", "vulkan"})
         REQUIRE(run(twinpath(fmt::format(
                         "render {} --backend {} --vk-mode compute --spp 8 --seed 5 -o {}",

@@ -14,6 +14,7 @@
 #include "support/pbr_reference.h"
 
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace tp::test::pbr {
@@ -45,5 +46,25 @@ struct ImageMean {
     glm::dvec3 se{0.0}; // from the film's variance of each pixel mean (pixels are independent)
 };
 ImageMean image_mean(const std::string& exr_path);
+
+// ---- the debug outputs' scene -----------------------------------------------------------------
+// A small PBR scene for path logs and AOVs: a floor with base colour (0.2, 0.4, 0.6), metallic
+// 0.25, roughness 0.45, transmission 0.3 and alpha 0.6 (alpha_mode "mask" at the default cutoff
+// 0.5: there; or "blend"), under a rough gold ball (metallic 1, roughness 0.3), a point light and
+// a dim environment, 16 x 16. `textured`: the floor's metallic-roughness texture is a checker
+// (G: roughness x 0.8 or 0.2, B: metallic x 0.5 or 0.1), so the fields show textures applied.
+// (Lavapipe compiles the debug shader variant of a textured PBR scene in about a minute, of an
+// untextured one in seconds: the GPU tests take the untextured scene.)
+std::string write_debug_scene(const std::string& dir, bool textured, const char* alpha_mode);
+
+// Checks the material fields of every hit of a path log (render --debug-log) of that scene: the
+// floor's as above (its roughness and metallic within the checker's range, or the factors), the
+// ball's factors. Returns the hits on the floor and on the ball.
+std::pair<size_t, size_t> check_debug_log(const std::string& log, bool textured);
+
+// Checks the pbr.roughness and pbr.metallic AOV layers (render --aov all) of that scene: the
+// floor's and the ball's values as above (with a texture, both checks in view), 0 where no
+// surface is hit.
+void check_debug_aovs(const std::string& exr, bool textured);
 
 } // namespace tp::test::pbr
