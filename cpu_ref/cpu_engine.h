@@ -45,10 +45,12 @@ struct CpuSceneState {
         params.sampler_id = sampler;
         error_terms.reserve(s.instances.size());
         for (const Instance& inst : s.instances) error_terms.push_back(instance_error_terms(inst));
+        for (const Texture& t : s.images) image_words.push_back(t.words.data());
     }
     const FlatScene& scene;
     RenderParams params;
     std::vector<InstanceErrorTerms> error_terms;
+    std::vector<const uint32_t*> image_words; // each image's texel words (scene_texel)
 };
 
 template <uint32_t Fixed, bool Record>
@@ -61,8 +63,7 @@ class CpuEngine {
           normals(state.scene.normals), uvs(state.scene.uvs), uvs1(state.scene.uvs1),
           tangents(state.scene.tangents), materials(state.scene.materials),
           texture_slots(state.scene.texture_slots), textures(state.scene.textures),
-          texel_words(state.scene.texel_words), lights(state.scene.lights),
-          light_table(state.scene.light_table),
+          lights(state.scene.lights), light_table(state.scene.light_table),
           env_table(state.scene.env_table), scene_features{features}, state_(state), accel_(accel),
           log_(log) {}
 
@@ -93,7 +94,6 @@ class CpuEngine {
     const std::vector<Material>& materials;
     const std::vector<TextureSlot>& texture_slots;
     const std::vector<TextureInfo>& textures;
-    const std::vector<uint32_t>& texel_words;
     const std::vector<Light>& lights;
     const std::vector<AliasEntry>& light_table;
     const std::vector<AliasEntry>& env_table;
@@ -117,6 +117,10 @@ class CpuEngine {
         log_->push_back(v);
     }
 
+    // Texel i of an image, its channels as stored, from the image's words (image/texture.h).
+    uvec4 scene_texel(uint32_t image, const TextureInfo& info, uint32_t i) const {
+        return words_texel_channels(state_.image_words[image], info.format, i);
+    }
     // rng.h's pair draws of a bounce, under the names the path loop calls: as members they hide
     // the namespace's functions inside the shared bodies. The first draw of a bounce computes
     // all of its pairs in lanes (rng_lanes.h), the others read them; the words are rng.h's.

@@ -8,17 +8,15 @@ set -euo pipefail
 # debootstrapped minimal Debian 12 (scripts/fresh_machine_check.sh) proves the list.
 build_pkgs=(
   cmake ninja-build g++ pkg-config
-  libembree-dev libtbb-dev libglm-dev libboost-dev libpng-dev
+  libembree-dev libtbb-dev libglm-dev libboost-dev
+  # Textures and glTF images (common/image/): PNG and JPEG in every build, the GPU bundle too.
+  libpng-dev libjpeg62-turbo-dev
   libvulkan-dev glslang-tools mesa-vulkan-drivers vulkan-validationlayers
   libopenimageio-dev libopenexr-dev
   # CMake packages that check that every file they list exists: OpenImageIO's lists its
   # tools (an error), Imath's (through OpenEXR) its Python module (a warning).
   openimageio-tools python3-imath
   nlohmann-json3-dev libtinyobjloader-dev libcli11-dev libfmt-dev
-  # glTF (common/scene/gltf_resources.cpp): tinygltf 2.7.0 as a shared library; its data: URI
-  # and image decoders (stb_image, through libstb0) are used, its header needs neither
-  # nlohmann-json nor stb.
-  libtinygltf-dev
   embree-tools
   # scripts/demo.sh reads `twinpath info --json` with python3.
   python3

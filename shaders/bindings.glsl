@@ -1,7 +1,8 @@
 // The scene and film buffers of descriptor set 0 (slots in interface.h), as the render shaders
 // see them. Every block uses the scalar layout, so the arrays are byte-for-byte the C++
 // vectors of FlatScene. The acceleration structure's bindings belong to the trace include
-// (trace_bvh.glsl: slots 16 and 17).
+// (trace_bvh.glsl: slots 16 and 17), the scene's images to their one reader
+// (scene_access.glsl: slot 15).
 #ifndef TP_SHADERS_BINDINGS_GLSL
 #define TP_SHADERS_BINDINGS_GLSL
 
@@ -42,9 +43,6 @@ layout(scalar, set = 0, binding = BINDING_LIGHT_TABLE) readonly buffer LightTabl
 };
 layout(scalar, set = 0, binding = BINDING_TEXTURES) readonly buffer TextureBuffer {
     TextureInfo textures[];
-};
-layout(scalar, set = 0, binding = BINDING_TEXELS) readonly buffer TexelBuffer {
-    uint texel_words[];
 };
 layout(scalar, set = 0, binding = BINDING_TEXTURE_SLOTS) readonly buffer TextureSlotBuffer {
     TextureSlot texture_slots[];

@@ -1,8 +1,9 @@
 // The interface between the Vulkan host code and the render shaders: descriptor binding slots,
 // the push constants of one batch, the per-pixel accumulator and the ray counters. Written in
 // the shared-header dialect (common/shared/lang.h) so that vulkan_rt/ and shaders/ read the
-// same numbers. Every binding is a storage buffer in descriptor set 0, except the pipeline
-// mode's TLAS (an acceleration-structure descriptor in slot 16, where compute mode has its BVH).
+// same numbers. Every binding is a storage buffer in descriptor set 0, except the scene's images
+// (an array of sampled images in slot 15) and the pipeline mode's TLAS (an
+// acceleration-structure descriptor in slot 16, where compute mode has its BVH).
 #ifndef TP_SHADERS_INTERFACE_H
 #define TP_SHADERS_INTERFACE_H
 
@@ -26,13 +27,16 @@ const uint BINDING_UVS = 6u;         // vec2[], parallel to positions (dummy wit
 const uint BINDING_TRIANGLES = 7u;   // uvec3[], mesh-local vertex indices
 const uint BINDING_LIGHTS = 8u;      // Light[]
 const uint BINDING_LIGHT_TABLE = 9u; // AliasEntry[], light selection
-const uint BINDING_TEXTURES = 10u;   // TextureInfo[]: the images
-const uint BINDING_TEXELS = 11u;     // uint[]: their texel words (TextureInfo::format)
+const uint BINDING_TEXTURES = 10u;   // TextureInfo[]: the images' sizes and formats
+const uint BINDING_TEXTURE_SLOTS = 11u; // TextureSlot[]: how materials read the images
 const uint BINDING_ENV_TABLE = 12u;  // AliasEntry[], environment-map pixels
 const uint BINDING_UVS1 = 13u;       // vec2[], the second uv set (dummy without one)
 const uint BINDING_TANGENTS = 14u;   // vec4[], normal maps' tangents (dummy without normal maps)
-const uint BINDING_TEXTURE_SLOTS = 15u; // TextureSlot[]: how materials read the images
-const uint BINDING_SCENE_COUNT = 16u;   // the scene's slots: 0 .. 15
+const uint BINDING_SCENE_COUNT = 15u; // the scene's storage buffers: 0 .. 14
+// The scene's images (TextureInfo[i] is image i), IMAGE_SLOTS sampled images of integer formats
+// read with texelFetch (shaders/scene_access.glsl); slots past the scene's images hold a
+// placeholder (vulkan_rt/render_loop/scene_images.h).
+const uint BINDING_IMAGES = 15u;
 const uint BINDING_BVH_NODES = 16u;  // BvhNode[] (compute mode)
 const uint BINDING_BVH_TRIS = 17u;   // BvhTriangle[] (compute mode)
 const uint BINDING_TLAS = 16u;       // top-level acceleration structure (pipeline mode; no 17)
@@ -43,9 +47,16 @@ const uint BINDING_AOV = 21u;        // PixelAov[width * height] (debug variant 
 const uint BINDING_SAMPLES = 22u;    // vec4[]: one batch's sample estimates, by work item
 const uint BINDING_COUNT = 23u;
 
-// ---- specialization constants (shaders/features.glsl, shaders/render_items.glsl) -------------
+// The images a render binds at most: a fixed-size array read through constant indices (the
+// switch of shaders/scene_access.glsl has a case for each), which every Vulkan device supports
+// (Mesa lavapipe has neither descriptor indexing nor dynamically indexed image arrays). 64 stays
+// within lavapipe's 128 sampled images and 128 resources per stage beside the storage buffers.
+const uint IMAGE_SLOTS = 64u;
+
+// ---- specialization constants (shaders/features.glsl, render_items.glsl, scene_access.glsl) --
 const uint SPEC_SCENE_FEATURES = 0u; // uint: the FEATURE_* mask the path loop is compiled for
 const uint SPEC_ITEM_SCHEDULE = 1u;  // uint: ITEM_SCHEDULE_*, how invocations take work items
+const uint SPEC_IMAGE_COUNT = 2u;    // uint: the scene's images, at most IMAGE_SLOTS
 
 // How the render invocations take the dispatch's work items (render_items.glsl).
 const uint ITEM_SCHEDULE_COUNTER = 0u; // from a counter, a new one when a path ends (regeneration)

@@ -111,17 +111,7 @@ void frame_camera(CameraDesc& c, const Box& world, float aspect) {
 } // namespace
 
 vec4 flat_texel_linear(const FlatScene& scene, uint32_t image, size_t i, bool srgb) {
-    const TextureInfo& info = scene.textures[image];
-    const uint32_t* w = scene.texel_words.data() + info.offset;
-    vec4 c;
-    if (info.format == TEXEL_RGBA8)
-        c = unpack_rgba8(w[i]);
-    else if (info.format == TEXEL_RGBA16)
-        c = unpack_rgba16(w[2 * i], w[2 * i + 1]);
-    else
-        c = vec4(uintBitsToFloat(w[4 * i]), uintBitsToFloat(w[4 * i + 1]),
-                 uintBitsToFloat(w[4 * i + 2]), uintBitsToFloat(w[4 * i + 3]));
-    return srgb && info.format != TEXEL_RGBA32F ? srgb_to_linear4(c) : c;
+    return scene.images[image].linear(i, srgb);
 }
 
 FlatScene flatten(const Scene& input) {
@@ -249,19 +239,14 @@ FlatScene flatten(const Scene& input) {
     f.params.max_depth = scene.settings.max_depth;
     f.params.min_depth = scene.settings.min_depth;
 
-    // Images, their words concatenated, and the slots that read them.
+    // Images (their texels shared, not copied: image/texture.h) and the slots that read them.
     for (const Texture& t : scene.textures) {
         TextureInfo info{};
-        if (f.texel_words.size() + t.words.size() > size_t(UINT32_MAX))
-            input_error("{}: the textures hold more than 2^32 words (16 GiB) of texels, the most "
-                        "a texel index addresses",
-                        scene.path);
-        info.offset = uint32_t(f.texel_words.size());
         info.width = t.width;
         info.height = t.height;
         info.format = t.format;
         f.textures.push_back(info);
-        f.texel_words.insert(f.texel_words.end(), t.words.begin(), t.words.end());
+        f.images.push_back(t);
     }
     f.texture_slots = scene.texture_slots;
 

@@ -50,8 +50,8 @@ struct FlatScene {
 
     std::vector<Light> lights;
     std::vector<AliasEntry> light_table; // one entry per light: selection by power
-    std::vector<TextureInfo> textures;       // the images
-    std::vector<uint32_t> texel_words;       // their texels (TextureInfo::offset, format)
+    std::vector<TextureInfo> textures;   // the images: sizes and formats
+    std::vector<Texture> images;         // their texels (shared with the Scene's, not copied)
     std::vector<TextureSlot> texture_slots;  // how materials read the images
     std::vector<AliasEntry> env_table; // environment-map pixels, when there is a map
 

@@ -1,12 +1,13 @@
 #include "scene/gltf_resources.h"
 
+#include "image/jpeg_io.h"
 #include "image/png_io.h"
+#include "image/texture_io.h"
 #include "scene/text_parse.h"
 #include "util/error.h"
 
-#include <tiny_gltf.h>
-
 #include <algorithm>
+#include <array>
 #include <climits>
 #include <cstring>
 #include <filesystem>
@@ -17,14 +18,6 @@ namespace fs = std::filesystem;
 
 namespace tp {
 namespace {
-
-// tinygltf's messages end in newlines; an error message is one line.
-std::string one_line(std::string s) {
-    for (char& c : s)
-        if (c == '\n' || c == '\r') c = ' ';
-    while (!s.empty() && s.back() == ' ') s.pop_back();
-    return clip(s);
-}
 
 bool is_data_uri(const std::string& uri) {
     return uri.rfind("data:", 0) == 0;
@@ -53,16 +46,28 @@ std::string read_file(const GltfDocument& d, const fs::path& file, const std::st
     return bytes;
 }
 
-std::string decode_data_uri(const GltfDocument& d, const std::string& uri,
-                            const std::string& field) {
-    std::vector<unsigned char> out;
-    std::string mime;
-    if (!tinygltf::DecodeDataURI(&out, mime, uri, 0, false))
-        input_error("{}: {}: a data: URI that is not base64 of a type glTF allows "
-                    "(application/octet-stream, application/gltf-buffer, image/png, "
-                    "image/jpeg), or is empty",
+DataUri decode_data_uri(const GltfDocument& d, const std::string& uri, const std::string& field) {
+    std::optional<DataUri> data = parse_data_uri(uri);
+    if (!data || data->bytes.empty())
+        input_error("{}: {}: a data: URI that is not base64 (data:<type>;base64,<data>) or is "
+                    "empty",
                     d.path, field);
-    return std::string(out.begin(), out.end());
+    return std::move(*data);
+}
+
+// The first bytes of a file, enough to tell its image format (texture_io.h).
+std::string file_head(const fs::path& file) {
+    std::string head(16, '\0');
+    std::ifstream in(file, std::ios::binary);
+    in.read(head.data(), std::streamsize(head.size()));
+    head.resize(size_t(std::max<std::streamsize>(in.gcount(), 0)));
+    return head;
+}
+
+// The format a glTF mimeType names when it is not one twinpath decodes.
+std::string undecoded_mime_type(const std::string& mime) {
+    if (mime.empty() || mime == "image/png" || mime == "image/jpeg") return "";
+    return mime;
 }
 
 } // namespace
@@ -101,7 +106,7 @@ GltfResources::GltfResources(const GltfDocument& doc, std::string_view bin, bool
         } else {
             owned_.push_back(
                 is_data_uri(b.uri)
-                    ? decode_data_uri(doc, b.uri, field + ".uri")
+                    ? decode_data_uri(doc, b.uri, field + ".uri").bytes
                     : read_file(doc, uri_file(doc, b.uri, field + ".uri"), field + ".uri"));
             data = owned_.back();
         }
@@ -112,52 +117,98 @@ GltfResources::GltfResources(const GltfDocument& doc, std::string_view bin, bool
     }
 }
 
+std::optional<DataUri> parse_data_uri(std::string_view uri) {
+    if (uri.substr(0, 5) != "data:") return std::nullopt;
+    const size_t comma = uri.find(',');
+    if (comma == std::string_view::npos) return std::nullopt;
+    const std::string_view header = uri.substr(5, comma - 5);
+    const std::string_view base64_tag = ";base64";
+    if (header.size() < base64_tag.size() ||
+        header.substr(header.size() - base64_tag.size()) != base64_tag)
+        return std::nullopt;
+    DataUri out;
+    out.media_type = std::string(header.substr(0, header.find(';')));
+    // RFC 4648's alphabet; '=' padding only at the end.
+    std::array<int, 256> value;
+    value.fill(-1);
+    const char* alphabet = "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789+/";
+    for (int i = 0; i < 64; ++i) value[static_cast<unsigned char>(alphabet[i])] = i;
+    std::string_view payload = uri.substr(comma + 1);
+    while (!payload.empty() && payload.back() == '=') payload.remove_suffix(1);
+    if (uri.size() - comma - 1 - payload.size() > 2 || payload.size() % 4 == 1) return std::nullopt;
+    out.bytes.reserve(payload.size() / 4 * 3 + 2);
+    uint32_t bits = 0;
+    int count = 0;
+    for (char c : payload) {
+        const int v = value[static_cast<unsigned char>(c)];
+        if (v < 0) return std::nullopt;
+        bits = bits << 6 | uint32_t(v);
+        if (++count == 4) {
+            out.bytes += char(bits >> 16);
+            out.bytes += char(bits >> 8 & 0xFF);
+            out.bytes += char(bits & 0xFF);
+            bits = 0;
+            count = 0;
+        }
+    }
+    if (count == 2) out.bytes += char(bits >> 4);
+    if (count == 3) {
+        out.bytes += char(bits >> 10);
+        out.bytes += char(bits >> 2 & 0xFF);
+    }
+    return out;
+}
+
 std::string_view GltfResources::view_bytes(uint32_t view) const {
     const GltfBufferView& v = doc_.buffer_views[view];
     return buffers_[v.buffer].substr(v.byte_offset, v.byte_length);
 }
 
-Texture GltfResources::decode_image(uint32_t image, const std::string& used_by) const {
+std::optional<Texture> GltfResources::decode_image(uint32_t image, const std::string& used_by,
+                                                   std::string& undecoded) const {
     const GltfImage& img = doc_.images[image];
     const std::string field = fmt::format("images[{}]", image);
-    std::string owned;
+    const std::string where = fmt::format("{}: {} (used by {})", doc_.path, field, used_by);
+    // The bytes of a buffer view or a data: URI; a file is decoded as it is read.
+    std::string owned, mime = img.mime_type;
     std::string_view bytes;
+    std::string data_field; // where the bytes of a buffer view or a data: URI are, for errors
+    fs::path file;
     if (img.buffer_view != GLTF_NONE) {
         bytes = view_bytes(uint32_t(img.buffer_view));
-    } else {
-        owned = is_data_uri(img.uri)
-                    ? decode_data_uri(doc_, img.uri, field + ".uri")
-                    : read_file(doc_, uri_file(doc_, img.uri, field + ".uri"), field + ".uri");
+        data_field = fmt::format("bufferViews[{}]", img.buffer_view);
+    } else if (is_data_uri(img.uri)) {
+        data_field = field + ".uri";
+        DataUri data = decode_data_uri(doc_, img.uri, field + ".uri");
+        if (mime.empty()) mime = data.media_type;
+        owned = std::move(data.bytes);
         bytes = owned;
-    }
-    if (bytes.empty() || bytes.size() > size_t(INT_MAX))
-        input_error("{}: {} (used by {}): {} bytes of image data", doc_.path, field, used_by,
-                    bytes.size());
-    tinygltf::Image decoded;
-    std::string err, warn;
-    if (!tinygltf::LoadImageData(&decoded, int(image), &err, &warn, 0, 0,
-                                 reinterpret_cast<const unsigned char*>(bytes.data()),
-                                 int(bytes.size()), nullptr))
-        input_error("{}: {} (used by {}): cannot decode the image (PNG, JPEG, BMP or GIF): {}",
-                    doc_.path, field, used_by, one_line(err));
-    const size_t texels = size_t(decoded.width) * size_t(decoded.height);
-    const size_t channels = size_t(decoded.component);
-    const size_t bytes_per = decoded.bits == 16 ? 2 : 1;
-    if (decoded.width <= 0 || decoded.height <= 0 || channels < 1 ||
-        decoded.image.size() != texels * channels * bytes_per)
-        input_error("{}: {} (used by {}): the decoder returned no usable pixels", doc_.path, field,
-                    used_by);
-    const uint32_t w = uint32_t(decoded.width), h = uint32_t(decoded.height);
-    Texture t;
-    if (bytes_per == 2) {
-        // 16-bit samples are in the host's order.
-        std::vector<uint16_t> px(texels * channels);
-        std::memcpy(px.data(), decoded.image.data(), px.size() * 2);
-        t = texture_from_rgba16(w, h, uint32_t(channels), px.data());
     } else {
-        t = texture_from_rgba8(w, h, uint32_t(channels), decoded.image.data());
+        file = uri_file(doc_, img.uri, field + ".uri");
+    }
+    const std::string head = file.empty() ? std::string(bytes.substr(0, 16)) : file_head(file);
+    if (file.empty() && (bytes.empty() || bytes.size() > size_t(INT_MAX)))
+        input_error("{}: {} bytes of image data", where, bytes.size());
+    Texture t;
+    try {
+        switch (image_format_of(head)) {
+        case ImageFormat::png:
+            t = file.empty() ? decode_png(bytes, data_field) : read_png(file.string());
+            break;
+        case ImageFormat::jpeg:
+            t = file.empty() ? decode_jpeg(bytes, data_field) : read_jpeg(file.string());
+            break;
+        default:
+            undecoded = undecoded_format_name(head);
+            if (undecoded.empty()) undecoded = undecoded_mime_type(mime);
+            if (!undecoded.empty()) return std::nullopt;
+            input_error("{}", "not a PNG or JPEG image (glTF's image formats)");
+        }
+    } catch (const InputError& e) {
+        input_error("{}: cannot decode the image: {}", where, e.what());
     }
     t.name = img.uri.empty() || is_data_uri(img.uri) ? field : clip(img.uri);
+    t.source = file.empty() ? fmt::format("{}: {}", doc_.path, field) : file.string();
     return t;
 }
 

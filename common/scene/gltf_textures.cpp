@@ -53,8 +53,19 @@ int GltfTextures::slot(const GltfTextureRef& ref, bool srgb, std::vector<std::st
     const uint32_t source = uint32_t(t.source);
     auto it = image_of_source_.find(source);
     if (it == image_of_source_.end()) {
-        s_.textures.push_back(res_.decode_image(source, ref.field));
-        it = image_of_source_.emplace(source, uint32_t(s_.textures.size() - 1)).first;
+        std::string format;
+        std::optional<Texture> image = res_.decode_image(source, ref.field, format);
+        const uint32_t index = image ? uint32_t(s_.textures.size()) : kUndecoded;
+        if (image) s_.textures.push_back(std::move(*image));
+        it = image_of_source_.emplace(source, index).first;
+        undecoded_format_[source] = format;
+    }
+    if (it->second == kUndecoded) {
+        dropped.push_back(fmt::format("{}: textures[{}]: images[{}] is {}: twinpath decodes PNG "
+                                      "and JPEG images",
+                                      ref.field, ref.texture, source,
+                                      clip(undecoded_format_[source])));
+        return NO_TEXTURE;
     }
     vec3 ts, tt;
     gltf_slot_transform(ref.transform, ts, tt);

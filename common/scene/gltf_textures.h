@@ -22,8 +22,9 @@ class GltfTextures {
         : d_(d), res_(res), s_(scene) {}
 
     // The slot of textureInfo `ref`, with texels read as sRGB colour or as linear data, or
-    // NO_TEXTURE with the reason in `dropped` (no image twinpath decodes, a uv set beyond
-    // TEXCOORD_1); what a path tracer ignores of its sampler goes to `ignored`.
+    // NO_TEXTURE with the reason in `dropped` (no image twinpath decodes: none, or one in a
+    // format other than PNG and JPEG; a uv set beyond TEXCOORD_1); what a path tracer ignores
+    // of its sampler goes to `ignored`.
     int slot(const GltfTextureRef& ref, bool srgb, std::vector<std::string>& dropped,
              std::vector<std::string>& ignored);
 
@@ -31,7 +32,9 @@ class GltfTextures {
     const GltfDocument& d_;
     const GltfResources& res_;
     Scene& s_;
-    std::map<uint32_t, uint32_t> image_of_source_; // glTF image -> scene image
+    static constexpr uint32_t kUndecoded = 0xFFFFFFFFu;
+    std::map<uint32_t, uint32_t> image_of_source_;     // glTF image -> scene image, or kUndecoded
+    std::map<uint32_t, std::string> undecoded_format_; // glTF image -> its format, if undecoded
 };
 
 // The slot's map from a uv to image coordinates for KHR_texture_transform's matrix: its first

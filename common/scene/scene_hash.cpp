@@ -17,7 +17,11 @@ void add_scene_content(Fnv1a& h, const FlatScene& s) {
     h.array(s.lights);
     h.array(s.light_table);
     h.array(s.textures);
-    h.array(s.texel_words);
+    // The images' texel words as one array (its length, then every image's words in order).
+    size_t words = 0;
+    for (const Texture& t : s.images) words += t.words.size();
+    h.value(uint64_t(words));
+    for (const Texture& t : s.images) h.bytes(t.words.data(), t.words.size() * sizeof(uint32_t));
     h.array(s.texture_slots);
     h.array(s.env_table);
     const RenderParams& p = s.params;

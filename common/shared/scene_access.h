@@ -2,11 +2,17 @@
 // and light sampling, written once against the scene's arrays, which each engine names the
 // same way before including this file:
 //   params, instances[], meshes[], triangles[], positions[], normals[], uvs[], uvs1[],
-//   tangents[], materials[], texture_slots[], textures[], texel_words[], lights[],
-//   light_table[], env_table[]  (FlatScene's arrays; GLSL: the storage buffers of
-//   shaders/bindings.glsl)
+//   tangents[], materials[], texture_slots[], textures[], lights[], light_table[],
+//   env_table[]  (FlatScene's arrays; GLSL: the storage buffers of shaders/bindings.glsl)
 //   scene_features                        the feature mask the reads are restricted to (what
 //                                         the scene cannot use is compiled out)
+//   scene_texel(uint image, TextureInfo info, uint i)
+//                                         the channels of texel i (row * width + column) of
+//                                         image `image` as stored (a uvec4: 8- or 16-bit
+//                                         integers, or float bits; texture.h decodes them): the
+//                                         CPU reads its texel words, the GPU fetches from the
+//                                         image (texelFetch, no hardware filtering), so both
+//                                         decode and filter the same values alike
 //   scene_error_terms(uint instance)      the instance's InstanceErrorTerms (surface.h)
 //   scene_env_table_size()                entries of env_table
 //   SCENE_LIGHT_NORMAL_FROM_VERTICES      a constant: how triangle lights' normals are had
@@ -46,21 +52,10 @@ SurfacePoint scene_surface(TraceHit h) {
     return sp;
 }
 
-// Texel i of an image, as stored (not decoded).
-vec4 scene_texel(TextureInfo info, uint i) {
-    if (info.format == TEXEL_RGBA8) return unpack_rgba8(texel_words[info.offset + i]);
-    if (info.format == TEXEL_RGBA16)
-        return unpack_rgba16(texel_words[info.offset + 2u * i],
-                             texel_words[info.offset + 2u * i + 1u]);
-    uint o = info.offset + 4u * i;
-    return vec4(uintBitsToFloat(texel_words[o]), uintBitsToFloat(texel_words[o + 1u]),
-                uintBitsToFloat(texel_words[o + 2u]), uintBitsToFloat(texel_words[o + 3u]));
-}
-
-// Texel i decoded to linear values: sRGB-encoded integer colour is decoded; float images, and
-// integer images read as data, are linear already.
-vec4 scene_texel_linear(TextureInfo info, uint i, bool srgb) {
-    vec4 c = scene_texel(info, i);
+// Texel i of image `image` decoded to linear values: sRGB-encoded integer colour is decoded;
+// float images, and integer images read as data, are linear already.
+vec4 scene_texel_linear(uint image, TextureInfo info, uint i, bool srgb) {
+    vec4 c = texel_channels_value(scene_texel(image, info, i), info.format);
     return srgb && info.format != TEXEL_RGBA32F ? srgb_to_linear4(c) : c;
 }
 
@@ -68,10 +63,10 @@ vec4 scene_texel_linear(TextureInfo info, uint i, bool srgb) {
 vec4 scene_image_bilinear(uint image, vec2 st, uint wrap_s, uint wrap_t, bool srgb) {
     TextureInfo info = textures[image];
     TexelFootprint fp = texture_footprint(st, info.width, info.height, wrap_s, wrap_t);
-    return texture_bilerp(scene_texel_linear(info, fp.i00, srgb),
-                          scene_texel_linear(info, fp.i10, srgb),
-                          scene_texel_linear(info, fp.i01, srgb),
-                          scene_texel_linear(info, fp.i11, srgb), fp.f);
+    return texture_bilerp(scene_texel_linear(image, info, fp.i00, srgb),
+                          scene_texel_linear(image, info, fp.i10, srgb),
+                          scene_texel_linear(image, info, fp.i01, srgb),
+                          scene_texel_linear(image, info, fp.i11, srgb), fp.f);
 }
 
 // Texture slot `slot` (TextureSlot) at a surface with uv sets uv0 and uv1, in linear RGBA.
@@ -85,8 +80,8 @@ vec4 scene_texture(int slot, vec2 uv0, vec2 uv1) {
     if ((ts.sampling & SLOT_NEAREST) == 0u)
         return scene_image_bilinear(ts.image, st, wrap_s, wrap_t, srgb);
     TextureInfo info = textures[ts.image];
-    return scene_texel_linear(info, texture_nearest(st, info.width, info.height, wrap_s, wrap_t),
-                              srgb);
+    return scene_texel_linear(ts.image, info,
+                              texture_nearest(st, info.width, info.height, wrap_s, wrap_t), srgb);
 }
 
 // The instance's material at surface point sp with its textures applied, and sp's shading

@@ -1,7 +1,8 @@
 // Texture addressing shared by both engines: a sampler's wrap modes, nearest and bilinear
 // footprints, the decoding of texel words, and the latitude-longitude parameterisation of
-// environment maps. The engines fetch the texels themselves (scene_access.h) and blend them
-// with texture_bilerp after decoding, so that sRGB texels are filtered in linear space.
+// environment maps. The engines fetch the texels themselves (the scene_texel hook of
+// scene_access.h), decode them here and blend them with texture_bilerp after decoding, so that
+// sRGB texels are filtered in linear space and both engines filter alike.
 //
 // Image coordinates (s, t) are in [0, 1]^2 with t = 0 at the top row, texel (i, j) centred at
 // ((i + 0.5) / w, (j + 0.5) / h). OBJ uv has v = 0 at the bottom: use uv_to_image.
@@ -78,19 +79,30 @@ inline vec4 texture_bilerp(vec4 c00, vec4 c10, vec4 c01, vec4 c11, vec2 f) {
 }
 
 // ---- texel decoding --------------------------------------------------------------------------
-// An 8-bit texel word (TEXEL_RGBA8, R in the low byte) as four values in [0, 1]; a product with
-// 1/255 rather than GLSL's unpackUnorm4x8, whose rounding a device may choose, so that both
-// engines decode the same floats.
+// A texel's channels as its image stores them (TextureInfo::format): 8- or 16-bit integers, or
+// the bits of four floats, as both engines fetch them (the CPU from the texel words, the GPU
+// from an integer image, vulkan_rt/render_loop/scene_images.h), to values: integers over their
+// maximum (a product with 1/255 rather than a division or GLSL's unpackUnorm4x8, whose rounding
+// a device may choose, so that both engines decode the same floats), float bits as floats.
+inline vec4 texel_channels_value(uvec4 c, uint format) {
+    if (format == TEXEL_RGBA8)
+        return vec4(float(c.x), float(c.y), float(c.z), float(c.w)) * (1.0f / 255.0f);
+    if (format == TEXEL_RGBA16)
+        return vec4(float(c.x), float(c.y), float(c.z), float(c.w)) * (1.0f / 65535.0f);
+    return vec4(uintBitsToFloat(c.x), uintBitsToFloat(c.y), uintBitsToFloat(c.z),
+                uintBitsToFloat(c.w));
+}
+
+// An 8-bit texel word (TEXEL_RGBA8, R in the low byte) as four values in [0, 1].
 inline vec4 unpack_rgba8(uint w) {
-    return vec4(float(w & 0xFFu), float((w >> 8u) & 0xFFu), float((w >> 16u) & 0xFFu),
-                float(w >> 24u)) *
-           (1.0f / 255.0f);
+    return texel_channels_value(uvec4(w & 0xFFu, (w >> 8u) & 0xFFu, (w >> 16u) & 0xFFu, w >> 24u),
+                                TEXEL_RGBA8);
 }
 
 // A 16-bit texel's two words (TEXEL_RGBA16) as four values in [0, 1].
 inline vec4 unpack_rgba16(uint rg, uint ba) {
-    return vec4(float(rg & 0xFFFFu), float(rg >> 16u), float(ba & 0xFFFFu), float(ba >> 16u)) *
-           (1.0f / 65535.0f);
+    return texel_channels_value(uvec4(rg & 0xFFFFu, rg >> 16u, ba & 0xFFFFu, ba >> 16u),
+                                TEXEL_RGBA16);
 }
 
 // The sRGB transfer function's inverse (IEC 61966-2-1): encoded value to linear.

@@ -115,16 +115,18 @@ struct Instance {
 };
 
 // ---- textures ----------------------------------------------------------------------------
-// An image: its texels in the texel word array, in one of two formats.
+// An image: its size and how its texels are stored. The CPU keeps them as words
+// (image/texture.h), the GPU as an integer image of the same bytes (shaders/scene_access.glsl);
+// either fetches texel i = row * width + column through the scene_texel hook (scene_access.h).
 const uint TEXEL_RGBA8 = 0u;   // one word per texel, R in the low byte (an 8-bit image)
 const uint TEXEL_RGBA32F = 1u; // four words per texel, the float bits of R, G, B, A
 const uint TEXEL_RGBA16 = 2u;  // two words per texel, R | G << 16 and B | A << 16 (16-bit)
 
 struct TextureInfo {
-    uint offset; // first word in the texel word array
     uint width;
     uint height;
     uint format; // TEXEL_*
+    uint pad0;
 };
 
 // TextureSlot::sampling bits: the sampler's wrap mode per axis, its filter, the uv set, and
@@ -183,7 +185,8 @@ static_assert(sizeof(Light) == 80 && offsetof(Light, normal) == 64, "Light layou
 static_assert(sizeof(AliasEntry) == 12, "AliasEntry layout");
 static_assert(sizeof(MeshInfo) == 32, "MeshInfo layout");
 static_assert(sizeof(Instance) == 112 && offsetof(Instance, mesh) == 96, "Instance layout");
-static_assert(sizeof(TextureInfo) == 16, "TextureInfo layout");
+static_assert(sizeof(TextureInfo) == 16 && offsetof(TextureInfo, format) == 8,
+              "TextureInfo layout");
 static_assert(sizeof(TextureSlot) == 32 && offsetof(TextureSlot, sampling) == 28,
               "TextureSlot layout");
 static_assert(sizeof(Camera) == 64 && offsetof(Camera, height) == 60, "Camera layout");

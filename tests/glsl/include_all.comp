@@ -42,7 +42,7 @@ layout(scalar, binding = 15) readonly buffer Tg { vec4 tangents[]; };
 layout(scalar, binding = 16) readonly buffer Sl { TextureSlot texture_slots[]; };
 layout(scalar, binding = 8) readonly buffer Ma { Material materials[]; };
 layout(scalar, binding = 9) readonly buffer Tx { TextureInfo textures[]; };
-layout(scalar, binding = 10) readonly buffer Te { uint texel_words[]; };
+layout(scalar, binding = 10) readonly buffer Te { uvec4 texels[]; };
 layout(scalar, binding = 11) readonly buffer L { Light lights[]; };
 layout(scalar, binding = 12) readonly buffer LT { AliasEntry light_table[]; };
 layout(scalar, binding = 13) readonly buffer ET { AliasEntry env_table[]; };
@@ -71,6 +71,9 @@ InstanceErrorTerms scene_error_terms(uint instance) {
 }
 uint scene_env_table_size() {
     return 0u;
+}
+uvec4 scene_texel(uint image, TextureInfo info, uint i) {
+    return texels[i];
 }
 struct RayCounts {
     uint camera;

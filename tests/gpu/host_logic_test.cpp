@@ -80,6 +80,7 @@ TEST_CASE("what compute mode needs", "[gpu]") {
     caps.float64 = caps.scalar_layout = caps.subgroup_arithmetic = caps.subgroup_ballot =
         caps.compute_queue = true;
     caps.max_storage_buffers = 32;
+    caps.max_sampled_images = caps.max_stage_resources = 128; // lavapipe's
     CHECK(compute_mode_missing(caps).empty());
     caps.float64 = false;
     caps.api_version = VK_API_VERSION_1_1;

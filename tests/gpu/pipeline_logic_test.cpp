@@ -54,6 +54,7 @@ DeviceCaps compute_caps() {
     caps.float64 = caps.scalar_layout = caps.subgroup_arithmetic = caps.subgroup_ballot =
         caps.compute_queue = true;
     caps.max_storage_buffers = 32;
+    caps.max_sampled_images = caps.max_stage_resources = 128; // lavapipe's
     return caps;
 }
 

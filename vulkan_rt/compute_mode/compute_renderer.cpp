@@ -48,14 +48,14 @@ class ComputeTracer : public Tracer {
     ComputeTracer(const VulkanContext& ctx, const BvhBuild& bvh, bool debug,
                   const RenderConstants& constants, const ComputeModules& modules)
         : bvh_(upload_bvh(ctx, bvh)), top_root_(bvh.top_root),
-          program_(ctx, modules.spirv, modules.bytes, BINDING_COUNT, sizeof(BatchParams), constants,
-                   true) {
+          program_(ctx, modules.spirv, modules.bytes, interface_slots(BINDING_COUNT, true),
+                   sizeof(BatchParams), constants, true) {
         if (debug) {
             const std::vector<uint32_t> spirv =
                 debug_spirv(modules.debug_spirv, modules.debug_bytes);
-            debug_program_ =
-                std::make_unique<ComputeProgram>(ctx, spirv.data(), spirv.size() * 4, BINDING_COUNT,
-                                                 sizeof(BatchParams), constants, false);
+            debug_program_ = std::make_unique<ComputeProgram>(
+                ctx, spirv.data(), spirv.size() * 4, interface_slots(BINDING_COUNT, true),
+                sizeof(BatchParams), constants, false);
         }
         bind(BINDING_BVH_NODES, bvh_.nodes);
         bind(BINDING_BVH_TRIS, bvh_.triangles);
@@ -71,6 +71,10 @@ class ComputeTracer : public Tracer {
     void bind(uint32_t binding, const Buffer& buffer) override {
         program_.bind(binding, buffer);
         if (debug_program_) debug_program_->bind(binding, buffer);
+    }
+    void bind_images(const std::vector<VkImageView>& views) override {
+        program_.bind_images(BINDING_IMAGES, views);
+        if (debug_program_) debug_program_->bind_images(BINDING_IMAGES, views);
     }
 
     void record_launch(VkCommandBuffer cmd, const BatchParams& batch,
@@ -108,6 +112,7 @@ ModeSetup prepare_compute(const VulkanContext& ctx, const FlatScene& scene,
     // The BVH's shape follows the mask the shader is specialized to: one level without
     // instancing, two with it (bvh_builder.h, trace_bvh.glsl).
     const uint32_t features = render_feature_mask(scene, options.all_features);
+    check_scene_images(ctx, scene, features); // before any work: a texture may not fit
     const auto t_build = std::chrono::steady_clock::now();
     const BvhBuild bvh = build_bvh(scene, features, layout);
     ModeSetup m;
@@ -118,7 +123,8 @@ ModeSetup prepare_compute(const VulkanContext& ctx, const FlatScene& scene,
         upload_scene(ctx, scene, seeded_params(scene, options), bvh.mesh_roots, 0, features);
     auto tracer = std::make_unique<ComputeTracer>(
         ctx, bvh, options.debug.active() || debug_spirv_overridden(),
-        RenderConstants{features, render_item_schedule(ctx.info(), options.gpu_invocations)});
+        RenderConstants{features, render_item_schedule(ctx.info(), options.gpu_invocations),
+                        m.buffers.images.count});
     add_cache_stats(tracer->cache_use(), m.accel.extra);
     m.accel.pipeline = tracer->report();
     m.tracer = std::move(tracer);

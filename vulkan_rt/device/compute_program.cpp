@@ -9,21 +9,10 @@
 #include <vector>
 
 namespace tp {
-namespace {
-
-std::vector<BindingSlot> storage_slots(uint32_t count) {
-    std::vector<BindingSlot> slots;
-    for (uint32_t i = 0; i < count; ++i) slots.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
-    return slots;
-}
-
-} // namespace
-
 ComputeProgram::ComputeProgram(const VulkanContext& ctx, const uint32_t* spirv, size_t spirv_bytes,
-                               uint32_t binding_count, uint32_t push_bytes,
+                               const std::vector<BindingSlot>& slots, uint32_t push_bytes,
                                const RenderConstants& constants, bool cached)
-    : device_(ctx.device()),
-      bindings_(ctx, storage_slots(binding_count), VK_SHADER_STAGE_COMPUTE_BIT, push_bytes) {
+    : device_(ctx.device()), bindings_(ctx, slots, VK_SHADER_STAGE_COMPUTE_BIT, push_bytes) {
     VkShaderModuleCreateInfo mi{};
     mi.sType = VK_STRUCTURE_TYPE_SHADER_MODULE_CREATE_INFO;
     mi.codeSize = spirv_bytes;

@@ -73,6 +73,11 @@ std::string compute_mode_missing(const DeviceCaps& caps) {
     if (!caps.subgroup_ballot) missing.push_back("subgroup ballots in compute shaders");
     if (caps.max_storage_buffers < BINDING_COUNT)
         missing.push_back(fmt::format("{} storage buffers per stage", BINDING_COUNT));
+    if (caps.max_sampled_images < IMAGE_SLOTS)
+        missing.push_back(fmt::format("{} sampled images per stage and set", IMAGE_SLOTS));
+    // Every slot but the images is one resource (a storage buffer, or the TLAS).
+    if (caps.max_stage_resources < BINDING_COUNT - 1 + IMAGE_SLOTS)
+        missing.push_back(fmt::format("{} resources per stage", BINDING_COUNT - 1 + IMAGE_SLOTS));
     return join(missing);
 }
 

@@ -19,6 +19,10 @@ struct DeviceCaps {
     bool subgroup_ballot = false;     // in compute shaders: work items taken together
     bool compute_queue = false;
     uint32_t max_storage_buffers = 0; // per shader stage
+    // Sampled images per shader stage and per descriptor set (the lesser), and resources of
+    // every kind per stage: the render shaders bind IMAGE_SLOTS images (shaders/interface.h).
+    uint32_t max_sampled_images = 0;
+    uint32_t max_stage_resources = 0;
     std::vector<std::string> extensions;
     // Invocations the device keeps resident at once, where it says so (VK_NV_shader_sm_builtins:
     // multiprocessors x warps per multiprocessor x 32); 0: unknown. Render launches need no more

@@ -4,6 +4,8 @@
 
 #include <fmt/format.h>
 
+#include <algorithm>
+
 namespace tp {
 namespace {
 
@@ -49,6 +51,9 @@ DeviceInfo query_device(VkPhysicalDevice device, uint32_t index) {
     DeviceCaps& caps = info.caps;
     caps.api_version = props.apiVersion;
     caps.max_storage_buffers = props.limits.maxPerStageDescriptorStorageBuffers;
+    caps.max_sampled_images = std::min(props.limits.maxPerStageDescriptorSampledImages,
+                                       props.limits.maxDescriptorSetSampledImages);
+    caps.max_stage_resources = props.limits.maxPerStageResources;
     caps.extensions = device_extensions(device);
 
     // Vulkan 1.1/1.2 structures may only be chained for devices that have them.

@@ -7,6 +7,12 @@
 
 namespace tp {
 
+std::vector<BindingSlot> storage_slots(uint32_t count) {
+    std::vector<BindingSlot> slots;
+    for (uint32_t i = 0; i < count; ++i) slots.push_back({i, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+    return slots;
+}
+
 PipelineBindings::PipelineBindings(const VulkanContext& ctx, const std::vector<BindingSlot>& slots,
                                    VkShaderStageFlags stages, uint32_t push_bytes)
     : ctx_(ctx), stages_(stages), push_bytes_(push_bytes) {
@@ -18,10 +24,10 @@ PipelineBindings::PipelineBindings(const VulkanContext& ctx, const std::vector<B
             VkDescriptorSetLayoutBinding b{};
             b.binding = s.binding;
             b.descriptorType = s.type;
-            b.descriptorCount = 1;
+            b.descriptorCount = s.count;
             b.stageFlags = stages;
             bindings.push_back(b);
-            ++counts[s.type];
+            counts[s.type] += s.count;
         }
         VkDescriptorSetLayoutCreateInfo sli{};
         sli.sType = VK_STRUCTURE_TYPE_DESCRIPTOR_SET_LAYOUT_CREATE_INFO;
@@ -108,6 +114,20 @@ void PipelineBindings::write_acceleration_structure(uint32_t binding,
     w.dstBinding = binding;
     w.descriptorCount = 1;
     w.descriptorType = VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR;
+    vkUpdateDescriptorSets(ctx_.device(), 1, &w, 0, nullptr);
+}
+
+void PipelineBindings::write_images(uint32_t binding, const std::vector<VkImageView>& views) {
+    std::vector<VkDescriptorImageInfo> infos;
+    for (VkImageView v : views)
+        infos.push_back({VK_NULL_HANDLE, v, VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL});
+    VkWriteDescriptorSet w{};
+    w.sType = VK_STRUCTURE_TYPE_WRITE_DESCRIPTOR_SET;
+    w.dstSet = set_;
+    w.dstBinding = binding;
+    w.descriptorCount = uint32_t(infos.size());
+    w.descriptorType = VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE;
+    w.pImageInfo = infos.data();
     vkUpdateDescriptorSets(ctx_.device(), 1, &w, 0, nullptr);
 }
 

@@ -13,8 +13,12 @@ namespace tp {
 
 struct BindingSlot {
     uint32_t binding;
-    VkDescriptorType type; // storage buffer or acceleration structure
+    VkDescriptorType type; // storage buffer, sampled image or acceleration structure
+    uint32_t count = 1;    // descriptors: an array of sampled images has several
 };
+
+// Slots 0 .. count - 1, all storage buffers.
+std::vector<BindingSlot> storage_slots(uint32_t count);
 
 class PipelineBindings {
   public:
@@ -31,6 +35,9 @@ class PipelineBindings {
     // device's maxStorageBufferRange.
     void write_buffer(uint32_t binding, const Buffer& buffer);
     void write_acceleration_structure(uint32_t binding, VkAccelerationStructureKHR tlas);
+    // Points the sampled images of slot `binding`, from its first, at `views` (in
+    // VK_IMAGE_LAYOUT_SHADER_READ_ONLY_OPTIMAL).
+    void write_images(uint32_t binding, const std::vector<VkImageView>& views);
 
     // Binds the set at `bind_point` and pushes the constants.
     void record_bind(VkCommandBuffer cmd, VkPipelineBindPoint bind_point, const void* push) const;

@@ -19,7 +19,7 @@
 namespace tp {
 namespace {
 
-// The ray-tracing pipeline over the TLAS it binds to slot 13; it keeps the acceleration
+// The ray-tracing pipeline over the TLAS it binds to slot 16; it keeps the acceleration
 // structures and the extension's functions alive.
 class PipelineTracer : public Tracer {
   public:
@@ -52,6 +52,10 @@ class PipelineTracer : public Tracer {
         program_.bind(binding, buffer);
         if (debug_program_) debug_program_->bind(binding, buffer);
     }
+    void bind_images(const std::vector<VkImageView>& views) override {
+        program_.bind_images(views);
+        if (debug_program_) debug_program_->bind_images(views);
+    }
     void record_launch(VkCommandBuffer cmd, const BatchParams& batch,
                        uint32_t invocations) const override {
         program_.record_trace(cmd, &batch, invocations, 1);
@@ -77,10 +81,12 @@ ModeSetup prepare_pipeline(const VulkanContext& ctx, const FlatScene& scene,
         input_error("--integrator cost counts BVH nodes and triangles of the software traversal: "
                     "use --vk-mode compute (the hardware traversal of pipeline mode exposes no "
                     "counts; docs/debugging.md)");
+    const uint32_t features = render_feature_mask(scene, options.all_features);
+    check_scene_images(ctx, scene, features); // before any work: a texture may not fit
     auto rt = std::make_unique<RtFunctions>(ctx.device());
     ModeSetup m;
-    m.buffers = upload_scene(ctx, scene, seeded_params(scene, options), {}, kAccelInputUsage,
-                             render_feature_mask(scene, options.all_features));
+    m.buffers =
+        upload_scene(ctx, scene, seeded_params(scene, options), {}, kAccelInputUsage, features);
     const auto t_build = std::chrono::steady_clock::now();
     auto as = std::make_unique<AccelStructures>(ctx, *rt, scene, m.buffers);
     m.accel.build_time_s =
@@ -91,8 +97,8 @@ ModeSetup prepare_pipeline(const VulkanContext& ctx, const FlatScene& scene,
     m.accel.extra["exact_meshes"] = std::to_string(as->exact_count());
     auto tracer = std::make_unique<PipelineTracer>(
         ctx, std::move(rt), std::move(as), options.debug.active() || debug_spirv_overridden(),
-        RenderConstants{render_feature_mask(scene, options.all_features),
-                        render_item_schedule(ctx.info(), options.gpu_invocations)});
+        RenderConstants{features, render_item_schedule(ctx.info(), options.gpu_invocations),
+                        m.buffers.images.count});
     add_cache_stats(tracer->cache_use(), m.accel.extra);
     m.accel.pipeline = tracer->report();
     m.tracer = std::move(tracer);

@@ -6,6 +6,7 @@
 #include "vulkan_rt/device/specialization.h"
 #include "vulkan_rt/device/vk_error.h"
 #include "vulkan_rt/pipeline_mode/sbt_layout.h"
+#include "vulkan_rt/render_loop/scene_buffers.h"
 
 #include <chrono>
 #include <vector>
@@ -21,15 +22,14 @@
 namespace tp {
 namespace {
 
-// Every interface slot but BINDING_BVH_TRIS, with the TLAS in BINDING_TLAS. Only the
-// ray-generation shader reads them; the hit and miss shaders touch only their payloads.
+// Every interface slot but BINDING_BVH_TRIS, with the TLAS in BINDING_TLAS and the scene's
+// images in BINDING_IMAGES. The ray-generation shader reads them, the any-hit alpha test the
+// scene's (its texture reads among them) and the intersection shader its triangles; the closest
+// hit and miss shaders touch only their payloads.
 std::vector<BindingSlot> pipeline_slots() {
     std::vector<BindingSlot> slots;
-    for (uint32_t b = 0; b < BINDING_COUNT; ++b) {
-        if (b == BINDING_BVH_TRIS) continue;
-        slots.push_back({b, b == BINDING_TLAS ? VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR
-                                              : VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
-    }
+    for (const BindingSlot& s : interface_slots(BINDING_COUNT, true, true))
+        if (s.binding != BINDING_BVH_TRIS) slots.push_back(s);
     return slots;
 }
 

@@ -1,10 +1,11 @@
 // Pipeline mode's ray-tracing pipeline: the ray-generation shader (shaders/render_pipeline.rgen,
 // the path loop), the two miss shaders and the hit groups of shaders/rt_interface.h; its
 // shader binding table (sbt_layout.h) in device memory; descriptor set 0 of interface.h with the
-// TLAS in slot 13; and the vkCmdTraceRaysKHR of a batch.
+// TLAS in slot 16 and the scene's images in slot 15; and the vkCmdTraceRaysKHR of a batch.
 #pragma once
 
 #include "render/stats.h"
+#include "shaders/interface.h"
 #include "vulkan_rt/device/buffer.h"
 #include "vulkan_rt/device/context.h"
 #include "vulkan_rt/device/pipeline_bindings.h"
@@ -29,6 +30,10 @@ class RtProgram {
     // Points storage-buffer slot `binding` at the whole of `buffer`.
     void bind(uint32_t binding, const Buffer& buffer) { bindings_.write_buffer(binding, buffer); }
     void bind_tlas(VkAccelerationStructureKHR tlas);
+    // Points BINDING_IMAGES at the scene's images (render_loop/scene_images.h).
+    void bind_images(const std::vector<VkImageView>& views) {
+        bindings_.write_images(BINDING_IMAGES, views);
+    }
 
     // Binds the pipeline and the set, pushes the constants and launches width x height
     // ray-generation invocations.

@@ -43,13 +43,15 @@ BatchSession::BatchSession(const VulkanContext& ctx, const FlatScene& scene, con
       aov_(ctx, debug.aov ? VkDeviceSize(width_) * height_ * sizeof(PixelAov) : sizeof(PixelAov),
            kStorage, false),
       samples_(ctx, kSampleBytes, kStorage, false),
-      resolve_(ctx, tp_spirv_resolve, sizeof(tp_spirv_resolve), BINDING_COUNT, sizeof(BatchParams),
-               RenderConstants{}, false),
+      resolve_(ctx, tp_spirv_resolve, sizeof(tp_spirv_resolve),
+               interface_slots(BINDING_COUNT, false), sizeof(BatchParams), RenderConstants{},
+               false),
       timer_(ctx) {
     for (uint32_t slot = 0; slot < sb.slots.size(); ++slot) {
         tracer.bind(slot, sb.slots[slot]);
         resolve_.bind(slot, sb.slots[slot]);
     }
+    tracer.bind_images(sb.images.views);
     tracer.bind(BINDING_ACCUM, accum_);
     tracer.bind(BINDING_COUNTERS, counters_);
     tracer.bind(BINDING_DEBUG, debug_);

@@ -28,6 +28,8 @@ class Tracer {
     virtual VkPipelineStageFlags shader_stage() const = 0;
     // Points slot `binding` (interface.h: scene, accumulator and counter slots) at `buffer`.
     virtual void bind(uint32_t binding, const Buffer& buffer) = 0;
+    // Points BINDING_IMAGES at the scene's images (scene_images.h: IMAGE_SLOTS views).
+    virtual void bind_images(const std::vector<VkImageView>& views) = 0;
     // Records `invocations` render invocations (a one-dimensional launch) with `batch` as push
     // constants. In the render pass they share the batch's work items (render_items.glsl); in
     // the debug variant's other passes invocation i is pixel (i % width, row_begin + i / width).

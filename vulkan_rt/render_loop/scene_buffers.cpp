@@ -2,6 +2,20 @@
 
 namespace tp {
 
+std::vector<BindingSlot> interface_slots(uint32_t count, bool images, bool tlas) {
+    std::vector<BindingSlot> slots;
+    for (uint32_t b = 0; b < count; ++b) {
+        if (b == BINDING_IMAGES) {
+            if (images) slots.push_back({b, VK_DESCRIPTOR_TYPE_SAMPLED_IMAGE, IMAGE_SLOTS});
+        } else if (tlas && b == BINDING_TLAS) {
+            slots.push_back({b, VK_DESCRIPTOR_TYPE_ACCELERATION_STRUCTURE_KHR});
+        } else {
+            slots.push_back({b, VK_DESCRIPTOR_TYPE_STORAGE_BUFFER});
+        }
+    }
+    return slots;
+}
+
 SceneBuffers upload_scene(const VulkanContext& ctx, const FlatScene& scene,
                           const RenderParams& params, const std::vector<uint32_t>& mesh_bvh_roots,
                           VkBufferUsageFlags geometry_usage, uint32_t features) {
@@ -13,6 +27,7 @@ SceneBuffers upload_scene(const VulkanContext& ctx, const FlatScene& scene,
     std::vector<MeshInfo> meshes = scene.meshes;
     for (size_t i = 0; i < mesh_bvh_roots.size(); ++i) meshes[i].bvh_root = mesh_bvh_roots[i];
 
+    check_scene_images(ctx, scene, features); // before anything is uploaded
     SceneBuffers sb;
     Uploader up(ctx);
     const VkBufferUsageFlags storage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT;
@@ -42,10 +57,11 @@ SceneBuffers upload_scene(const VulkanContext& ctx, const FlatScene& scene,
     put_if(BINDING_LIGHT_TABLE, true, scene.light_table);
     const bool env_map = feature_on(features, FEATURE_ENV_MAP);
     put_if(BINDING_TEXTURES, textures || env_map, scene.textures);
-    put_if(BINDING_TEXELS, textures || env_map, scene.texel_words);
     put_if(BINDING_TEXTURE_SLOTS, textures, scene.texture_slots);
     put_if(BINDING_ENV_TABLE, env_map, scene.env_table);
     up.flush();
+    sb.images = upload_scene_images(ctx, scene, features);
+    sb.bytes += sb.images.bytes;
     return sb;
 }
 

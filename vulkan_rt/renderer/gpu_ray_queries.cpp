@@ -41,6 +41,10 @@ ClosestHits closest_hits_compute(const VulkanContext& ctx, const FlatScene& scen
     const Buffer dummy(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
     std::vector<const Buffer*> bound;
     for (const Buffer& b : sb.slots) bound.push_back(&b);
+    bound.push_back(nullptr); // BINDING_IMAGES: `images`, for the alpha test's texture reads
+    const ImageArrayBinding images{BINDING_IMAGES, sb.images.views, sb.images.count};
+    static_assert(BINDING_SCENE_COUNT == BINDING_IMAGES && BINDING_IMAGES + 1 == BINDING_BVH_NODES,
+                  "the slots below follow interface.h");
     bound.push_back(&bb.nodes);
     bound.push_back(&bb.triangles);
     bound.push_back(&dummy); // accumulators
@@ -65,7 +69,7 @@ ClosestHits closest_hits_compute(const VulkanContext& ctx, const FlatScene& scen
                 ctx, wide ? tp_spirv_closest_hits_wide_comp : tp_spirv_closest_hits_comp,
                 wide ? sizeof(tp_spirv_closest_hits_wide_comp) : sizeof(tp_spirv_closest_hits_comp),
                 {bytes_of(rays)}, {rays.size() * sizeof(RayHit)}, &bp, sizeof(bp),
-                uint32_t(rays.size() + 63) / 64, bound, features);
+                uint32_t(rays.size() + 63) / 64, bound, features, &images);
             const std::vector<RayHit> hits = as_vector<RayHit>(res[0]);
             std::vector<Ray> again;
             std::vector<size_t> again_index;
@@ -92,10 +96,13 @@ ClosestHits closest_hits_pipeline(const VulkanContext& ctx, const FlatScene& sce
     const RtFunctions rt(ctx.device());
     const SceneBuffers sb = upload_scene(ctx, scene, scene.params, {}, kAccelInputUsage);
     const AccelStructures as(ctx, rt, scene, sb);
+    RenderConstants constants;
+    constants.image_count = sb.images.count;
     RtProgram program(ctx, rt, sizeof(BatchParams), tp_spirv_closest_hits_rgen,
-                      sizeof(tp_spirv_closest_hits_rgen), RenderConstants{}, as.exact_count() > 0);
+                      sizeof(tp_spirv_closest_hits_rgen), constants, as.exact_count() > 0);
     program.bind_tlas(as.tlas());
     for (uint32_t b = 0; b < sb.slots.size(); ++b) program.bind(b, sb.slots[b]);
+    program.bind_images(sb.images.views);
     const Buffer dummy(ctx, 16, VK_BUFFER_USAGE_STORAGE_BUFFER_BIT, false);
     program.bind(BINDING_ACCUM, dummy);
     program.bind(BINDING_COUNTERS, dummy);
