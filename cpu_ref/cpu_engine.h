@@ -100,27 +100,32 @@ class CpuEngine {
     const FeatureMask scene_features;
 
     bool trace_closest(const Ray& ray, Hit& hit) const {
-        const CoverageTest c{&CpuEngine::alpha_covers_thunk, this, ray};
-        hit = accel_.intersect(ray, feature_on(scene_features, FEATURE_ALPHA) ? &c : nullptr);
+        if (feature_on(scene_features, FEATURE_ALPHA)) {
+            const CoverageTest c{&CpuEngine::alpha_covers_thunk, this, ray};
+            hit = accel_.intersect(ray, &c);
+        } else {
+            hit = accel_.intersect(ray, nullptr);
+        }
         return hit.found;
     }
     bool trace_occluded(const Ray& ray) const {
+        if (!feature_on(scene_features, FEATURE_ALPHA)) return accel_.occluded(ray, nullptr);
         const CoverageTest c{&CpuEngine::alpha_covers_thunk, this, ray};
-        return accel_.occluded(ray, feature_on(scene_features, FEATURE_ALPHA) ? &c : nullptr);
+        return accel_.occluded(ray, &c);
     }
     InstanceErrorTerms scene_error_terms(uint32_t instance) const {
         return state_.error_terms[instance];
     }
     uint32_t scene_env_table_size() const { return uint32_t(env_table.size()); }
+    // Texel i of an image, its channels as stored, from the image's words (image/texture.h).
+    uvec4 scene_texel(uint32_t image, const TextureInfo& info, uint32_t i) const {
+        return words_texel_channels(state_.image_words[image], info.format, i);
+    }
     void path_log_emit(PathVertex v, uint32_t termination) const {
         v.termination = termination;
         log_->push_back(v);
     }
 
-    // Texel i of an image, its channels as stored, from the image's words (image/texture.h).
-    uvec4 scene_texel(uint32_t image, const TextureInfo& info, uint32_t i) const {
-        return words_texel_channels(state_.image_words[image], info.format, i);
-    }
     // rng.h's pair draws of a bounce, under the names the path loop calls: as members they hide
     // the namespace's functions inside the shared bodies. The first draw of a bounce computes
     // all of its pairs in lanes (rng_lanes.h), the others read them; the words are rng.h's.
