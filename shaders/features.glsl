@@ -9,6 +9,6 @@
 #include "interface.h"
 #include "shared/features.h"
 
-layout(constant_id = SPEC_SCENE_FEATURES) const uint scene_features = 1023u; // FEATURES_ALL
+layout(constant_id = SPEC_SCENE_FEATURES) const uint scene_features = FEATURES_ALL;
 
 #endif // TP_SHADERS_FEATURES_GLSL

@@ -24,7 +24,7 @@ const uint RT_HIT_GROUP_COUNT = 2u;     // at most; 1 without exact meshes
 
 // Payload locations (traceRayEXT takes an int constant).
 const int RT_PAYLOAD_HIT = 0;    // TraceHit (trace_hit.glsl)
-const int RT_PAYLOAD_SHADOW = 1; // uint: 1 occluded, 0 free
+const int RT_PAYLOAD_SHADOW = 1; // TraceHit: instance TRACE_MISS free, else occluded
 
 TP_NAMESPACE_END
 

@@ -4,9 +4,10 @@
 #extension GL_EXT_ray_tracing : require
 
 #include "rt_interface.h"
+#include "trace_hit.glsl"
 
-layout(location = RT_PAYLOAD_SHADOW) rayPayloadInEXT uint occluded;
+layout(location = RT_PAYLOAD_SHADOW) rayPayloadInEXT TraceHit shadow;
 
 void main() {
-    occluded = 0u;
+    shadow.instance = TRACE_MISS;
 }

@@ -8,6 +8,9 @@ struct TraceHit {
     uint instance;  // FlatScene instance index; TRACE_MISS in a pipeline payload: no hit
     uint primitive; // triangle index inside the instance's mesh
     vec2 bary;      // weights of vertices 1 and 2
+    // Pipeline mode: the traced ray's tag (shared/path.h, Ray::tag), which the ray-generation
+    // shader puts in the payload for the any-hit alpha test (alpha_test.rahit) to read.
+    uint tag;
 };
 
 // No instance: instanceCustomIndex has 24 bits, so no real instance index reaches this.

@@ -16,8 +16,9 @@
 // (shared/path.h), so neither end lies on a surface.
 // Geometry is opaque (VK_GEOMETRY_OPAQUE_BIT_KHR), and so are the rays, so no any-hit shader
 // runs, except in a scene with alpha (FEATURE_ALPHA): there the rays leave opacity to the
-// instances, and those of materials with alpha run shaders/alpha_test.rahit. gl_HitTEXT is the parameter of the world-space ray: the instance
-// transform leaves t unchanged, as in trace_bvh.glsl.
+// instances, and those of materials with alpha run shaders/alpha_test.rahit.
+// gl_HitTEXT is the parameter of the world-space ray: the instance transform leaves t
+// unchanged, as in trace_bvh.glsl.
 #ifndef TP_SHADERS_TRACE_RTX_GLSL
 #define TP_SHADERS_TRACE_RTX_GLSL
 
@@ -49,10 +50,14 @@ uint trace_opaque_flag() {
     return feature_on(scene_features, FEATURE_ALPHA) ? gl_RayFlagsNoneEXT : gl_RayFlagsOpaqueEXT;
 }
 
+// Both payloads are TraceHits, so that the any-hit shader, which both kinds of ray run, reads
+// the ray's tag from either: a shadow ray's instance is 0 until the shadow miss shader sets it
+// to TRACE_MISS.
 layout(location = RT_PAYLOAD_HIT) rayPayloadEXT TraceHit rt_hit;
-layout(location = RT_PAYLOAD_SHADOW) rayPayloadEXT uint rt_occluded;
+layout(location = RT_PAYLOAD_SHADOW) rayPayloadEXT TraceHit rt_shadow;
 
 bool trace_closest(Ray ray, out TraceHit hit) {
+    rt_hit.tag = ray.tag;
     traceRayEXT(tlas, trace_opaque_flag(), 0xFFu, 0u, 0u, RT_MISS_CLOSEST, ray.origin, 0.0f,
                 ray.dir, ray.tmax, RT_PAYLOAD_HIT);
     hit = rt_hit;
@@ -60,15 +65,16 @@ bool trace_closest(Ray ray, out TraceHit hit) {
 }
 
 // The first hit found ends the search and no closest-hit shader runs; only the shadow miss
-// shader writes the payload, clearing the "occluded" set here.
+// shader writes the payload, marking the ray free.
 bool trace_occluded(Ray ray) {
-    rt_occluded = 1u;
+    rt_shadow.instance = 0u;
+    rt_shadow.tag = ray.tag;
     traceRayEXT(tlas,
                 gl_RayFlagsTerminateOnFirstHitEXT | gl_RayFlagsSkipClosestHitShaderEXT |
                     trace_opaque_flag(),
                 0xFFu, 0u, 0u, RT_MISS_SHADOW, ray.origin, 0.0f, ray.dir, ray.tmax,
                 RT_PAYLOAD_SHADOW);
-    return rt_occluded != 0u;
+    return rt_shadow.instance != TRACE_MISS;
 }
 
 #endif // TP_SHADERS_TRACE_RTX_GLSL

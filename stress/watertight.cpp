@@ -168,7 +168,7 @@ RaySet make_rays(const std::string& name, Mesh mesh, uint64_t min_rays) {
             const float len = glm::length(to);
             r.dir = to / len;
             r.tmax = FLOAT_MAX;
-            r.pad0 = 0;
+            r.tag = 0;
             rs.rays.push_back(r);
             rs.t_target.push_back(len);
         }

@@ -155,7 +155,8 @@ bool path_at_hit(INOUT(PathState) st, bool found, TraceHit hit, INOUT(RayCounts)
             PATH_LOG(rec.light_f = f);
             if (!is_black(f) && !is_black(ls.radiance)) {
                 float light_pdf = sel_pdf * ls.pdf;
-                vec3 contrib = st.T * f * (dot(sp.ns, ls.wi) / light_pdf) * ls.radiance;
+                // |cos|: a light behind a transmitting surface is below the shading normal.
+                vec3 contrib = st.T * f * (abs(dot(sp.ns, ls.wi)) / light_pdf) * ls.radiance;
                 if (features_mis(scene_features) && !ls.delta)
                     contrib *= power_heuristic(light_pdf,
                                                bsdf_pdf_in(scene_features, mat, sp.ns, wo, ls.wi));
@@ -166,6 +167,7 @@ bool path_at_hit(INOUT(PathState) st, bool found, TraceHit hit, INOUT(RayCounts)
                 ++rays.shadow;
                 Ray sr = shadow_ray(sp.p, sp.p_error, sp.ng, ls, lights[li], TRACE_OFFSET_SLACK,
                                     SCENE_LIGHT_NORMAL_FROM_VERTICES);
+                sr.tag = ray_tag(st.key, st.bounce, RAY_TAG_SHADOW);
                 if (TRACE_SHADOW_AFTER_SCATTER) {
                     shadow_pending = true;
                     shadow = sr;
@@ -196,6 +198,7 @@ bool path_at_hit(INOUT(PathState) st, bool found, TraceHit hit, INOUT(RayCounts)
     Ray next = st.ray;
     if (TRACE_SHADOW_AFTER_SCATTER) {
         next = spawn_ray(sp.p, sp.p_error, sp.ng, bs.wi, TRACE_OFFSET_SLACK);
+        next.tag = ray_tag(st.key, st.bounce + 1u, RAY_TAG_PATH);
         if (shadow_pending) {
             bool occluded = trace_occluded(shadow);
             if (!occluded) st.L += shadow_contrib;
@@ -216,9 +219,11 @@ bool path_at_hit(INOUT(PathState) st, bool found, TraceHit hit, INOUT(RayCounts)
         PATH_LOG(rec.throughput = st.T; path_log_emit(rec, TERM_ROULETTE));
         return false;
     }
-    st.ray = TRACE_SHADOW_AFTER_SCATTER
-                 ? next
-                 : spawn_ray(sp.p, sp.p_error, sp.ng, bs.wi, TRACE_OFFSET_SLACK);
+    if (!TRACE_SHADOW_AFTER_SCATTER) {
+        next = spawn_ray(sp.p, sp.p_error, sp.ng, bs.wi, TRACE_OFFSET_SLACK);
+        next.tag = ray_tag(st.key, st.bounce + 1u, RAY_TAG_PATH);
+    }
+    st.ray = next;
     ++rays.extension;
     PATH_LOG(rec.throughput = st.T; path_log_emit(rec, TERM_CONTINUE));
     ++st.bounce;

@@ -9,6 +9,7 @@
 #ifndef TP_SHARED_PATH_H
 #define TP_SHARED_PATH_H
 
+#include "alpha.h"
 #include "brdf.h"
 #include "camera.h"
 #include "lights.h"
@@ -48,7 +49,7 @@ struct Ray {
     vec3 origin;
     float tmax; // the hit must lie in (0, tmax)
     vec3 dir;   // unit
-    uint pad0;
+    uint tag;   // the ray's identity for alpha BLEND's coin (alpha.h, ray_tag); 0: none
 };
 
 // New ray leaving p (coordinate error bound p_error, offset.h) in direction d (unit) from a
@@ -59,7 +60,7 @@ inline Ray spawn_ray(vec3 p, vec3 p_error, vec3 ng, vec3 d, float slack) {
     r.origin = offset_ray_origin(p, p_error, dot(d, ng) > 0.0f ? ng : -ng, slack);
     r.dir = d;
     r.tmax = FLOAT_MAX;
-    r.pad0 = 0u;
+    r.tag = 0u;
     return r;
 }
 
@@ -72,7 +73,7 @@ inline Ray camera_ray(Camera cam, RngKey key, uint x, uint y) {
     vec2 jitter = rng_get2(key, RNG_PIXEL_X);
     r.dir = camera_direction(cam, float(x) + jitter.x, float(y) + jitter.y);
     r.tmax = FLOAT_MAX;
-    r.pad0 = 0u;
+    r.tag = ray_tag(key, 0u, RAY_TAG_PATH);
     return r;
 }
 

@@ -188,7 +188,7 @@ inline Ray camera_center_ray(Camera c, uint x, uint y) {
     r.origin = c.eye;
     r.dir = camera_direction(c, float(x) + 0.5f, float(y) + 0.5f);
     r.tmax = FLOAT_MAX;
-    r.pad0 = 0u;
+    r.tag = 0u;
     return r;
 }
 

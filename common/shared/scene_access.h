@@ -146,7 +146,7 @@ bool scene_alpha_covers(uint instance, uint primitive, vec2 bary, Ray ray) {
         scene_uvs_at(instance, primitive, bary, uv0, uv1);
         a *= scene_texture(m.kd_texture, uv0, uv1).w;
     }
-    return alpha_covers(m.alpha_mode, a, m.alpha_cutoff, ray.origin, ray.dir, instance, primitive);
+    return alpha_covers(m.alpha_mode, a, m.alpha_cutoff, ray.tag, instance, primitive);
 }
 
 // What the emissive texture of triangle light l's material makes of its radiance at

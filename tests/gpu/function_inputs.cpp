@@ -561,9 +561,8 @@ void make_input(uint32_t id, InputGen& g, FnIn& x) {
         break;
     case FN_ALPHA_BLEND_THRESHOLD:
     case FN_ALPHA_COVERS:
-        set3(x, 0, g.box(g.log_uniform(1e-3f, 1e4f)));
-        set3(x, 1, n);
-        x.u = uvec4(g.below(1000), g.u32(), g.below(3), 0u);
+        // instance, primitive, alpha mode, the ray's tag
+        x.u = uvec4(g.below(1000), g.u32(), g.below(3), g.u32());
         x.f[2] = vec4(g.chance(0.2f) ? float(g.below(2)) : g.uni(), g.uni(), 0.0f, 0.0f);
         break;
     case FN_SRGB_TO_LINEAR:

@@ -11,9 +11,7 @@
 //     engines under compare --exact.
 // The scene is untextured here (lavapipe compiles the debug variant of a textured one in a
 // minute); tests/integration/pbr_debug_test.cpp checks the textured values on the CPU.
-// Two open cases, as [!shouldfail] test cases: the furnace through the surface (next-event
-// estimation's cosine sign, pbr_furnace.h) and alpha BLEND's coverage, which the two engines
-// decide differently for the same path.
+//   - alpha BLEND: the two engines decide coverage alike for the same path.
 #include "image/exr_io.h"
 #include "support/pbr_furnace.h"
 #include "support/test_paths.h"
@@ -79,10 +77,8 @@ TEST_CASE("glTF material furnace: a flat surface renders its directional albedo 
     check_furnaces(false);
 }
 
-// Open: see tests/integration/pbr_furnace_test.cpp (next-event estimation's cosine sign, shared
-// by both engines). Fails once that is fixed: then drop [!shouldfail].
-TEST_CASE("glTF material furnace through the surface in Vulkan (open: NEE's cosine sign)",
-          "[gpu][pbr][!shouldfail]") {
+// Light through the surface: see tests/integration/pbr_furnace_test.cpp.
+TEST_CASE("glTF material furnace through the surface in Vulkan", "[gpu][pbr]") {
     check_furnaces(true);
 }
 
@@ -128,18 +124,12 @@ TEST_CASE("a PBR scene's path logs and AOVs record its material fields alike on 
     pbr::check_debug_aovs(dir + "/vk.exr", false);
 }
 
-// Open: alpha BLEND keeps a surface where alpha > alpha_blend_threshold(ray origin, ray
-// direction, instance, primitive) (shared/alpha.h), a hash of the floats' bits; the two engines'
-// rays agree to rounding but not bit for bit (the GPU's division and normalization are not
-// correctly rounded; the camera ray's direction comes from one), so they draw different
-// thresholds and the same path goes through the surface on one engine and stops on it on the
-// other: with the floor blended, the path log of pixel (3, 13) diverges in sample 4 at vertex 0
-// (event: miss on the CPU, hit in compute mode). Same-seed renders, which otherwise agree to
-// float rounding (docs/stress.md, "Same-seed twins"), then differ by whole path values. A
-// threshold both engines compute exactly (from the path's random-number key and bounce) would
-// make this pass; then drop [!shouldfail].
-TEST_CASE("alpha BLEND: same-seed renders of a blended surface agree on both engines (open)",
-          "[gpu][pbr][!shouldfail]") {
+// Alpha BLEND keeps a surface where alpha > alpha_blend_threshold(the ray's tag, instance,
+// primitive) (shared/alpha.h): the tag names the ray by its path, not by its floats, which the
+// two engines compute only to rounding, so same-seed renders of a blended floor make the same
+// decisions on both engines and agree to float rounding (docs/stress.md, "Same-seed twins").
+TEST_CASE("alpha BLEND: same-seed renders of a blended surface agree on both engines",
+          "[gpu][pbr]") {
     const std::string dir = temp_dir("pbr-blend");
     const std::string scene = pbr::write_debug_scene(dir, false, "blend");
     for (const char* backend : {"cpu", "vulkan"})

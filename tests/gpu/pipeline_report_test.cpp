@@ -4,6 +4,7 @@
 // `bench --specialization`. Lavapipe (CI) has the first and not the second: there the second
 // must be one note, not an error. CTest runs this with TWINPATH_VALIDATION=1, so a render that
 // drew a validation message fails (exit 3) and `validation_messages` is checked besides.
+#include "shared/features.h"
 #include "support/test_paths.h"
 
 #include <catch2/catch.hpp>
@@ -105,7 +106,7 @@ TEST_CASE("render --pipeline-stats writes the executables or says in one line wh
     const json& pl = p["pipelines"][0];
     CHECK(pl["mode"] == "compute");
     CHECK(pl["variant"] == "all");
-    CHECK(pl["feature_mask"] == 1023);
+    CHECK(pl["feature_mask"] == tp::FEATURES_ALL);
     CHECK(pl["creation"] == s["pipeline_creation"]);
     if (pl["statistics_available"] == true) {
         CHECK(count_of(out, kNote) == 0);
@@ -150,7 +151,7 @@ TEST_CASE("bench --specialization --pipeline-stats: both variants' pipelines per
     CHECK(result["settings"]["pipeline_stats"] == true);
     json& row = result["scenes"][0]["specialization"][0];
     CHECK(row["all"]["pipeline"]["variant"] == "all");
-    CHECK(row["all"]["pipeline"]["feature_mask"] == 1023);
+    CHECK(row["all"]["pipeline"]["feature_mask"] == tp::FEATURES_ALL);
     CHECK(row["specialized"]["pipeline"]["variant"] == "scene");
     CHECK(row["specialized"]["pipeline"]["feature_mask"] == row["feature_mask"]);
     if (row["specialized"]["pipeline"]["statistics_available"] == false) {

@@ -50,7 +50,7 @@ TEST_CASE("Vulkan: the specialized shader agrees with the all-features shader on
             const nlohmann::json all =
                 render(scene, dir, "all", cache, common + " --seed 22 --features all", nullptr);
             CHECK(spec["features"]["variant"] == "scene");
-            CHECK(all["features"]["mask"] == 1023);
+            CHECK(all["features"]["mask"] == tp::FEATURES_ALL);
             // The BVH's shape follows the mask (bvh_builder.h): one level for cornell and
             // furnace, which have no instancing, so the comparison below checks the one-level
             // traversal against the two-level one of the all-features shader.

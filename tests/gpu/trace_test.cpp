@@ -104,7 +104,7 @@ std::vector<Ray> random_rays(const FlatScene& scene, size_t n, uint32_t seed) {
         r.dir = vec3(glm::normalize(glm::dvec3(g(rng), g(rng), g(rng))));
         // Half the rays unbounded, half ending somewhere inside the scene (shadow rays).
         r.tmax = u(rng) < 0.5f ? FLOAT_MAX : u(rng) * glm::length(hi - lo);
-        r.pad0 = 0;
+        r.tag = 0;
     }
     return rays;
 }

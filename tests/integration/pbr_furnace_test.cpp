@@ -52,13 +52,11 @@ TEST_CASE("glTF material furnace: a flat surface renders its directional albedo 
     check_furnaces(false);
 }
 
-// Open (pbr_furnace.h, FurnaceCase::transmits): next-event estimation weighs a light sample
-// behind a transmitting surface by dot(ns, wi) < 0 (common/shared/integrator.h, step 3), so the
-// thin-walled transmitter renders 13 % dark, the volume 2.8 % (from outside) and 5.7 % (from
-// inside); with |dot(ns, wi)| all pass within 2 SE. This test case fails once that is fixed:
-// then drop [!shouldfail] and fold it into the one above.
-TEST_CASE("glTF material furnace through the surface on the CPU (open: NEE's cosine sign)",
-          "[integration][pbr][!shouldfail]") {
+// Light that arrives through a transmitting surface (pbr_furnace.h, FurnaceCase::transmits):
+// next-event estimation samples the environment below it and weighs it by |dot(ns, wi)|
+// (common/shared/integrator.h, step 3); with the signed cosine such a sample was subtracted and
+// the thin-walled transmitter rendered 13 % dark.
+TEST_CASE("glTF material furnace through the surface on the CPU", "[integration][pbr]") {
     check_furnaces(true);
 }
 

@@ -27,9 +27,7 @@ struct FurnaceCase {
     bool on_gpu; // also in the Vulkan test (a subset: lavapipe builds a pipeline per render)
 
     // Light arrives through the surface, and next-event estimation samples the environment
-    // below it. Open: integrator.h weighs such a light sample by dot(ns, wi) < 0, so that its
-    // contribution is subtracted; these cases are checked by [!shouldfail] test cases until it
-    // is fixed.
+    // below it (integrator.h weighs it by |dot(ns, wi)|); checked by test cases of their own.
     bool transmits() const { return p.transmission > 0.0 && p.metallic < 1.0; }
 };
 

@@ -684,10 +684,10 @@ inline FnOut run_function(uint id, FnIn x) {
         fn_put3(o, 0u, pbr_volume_transmittance(fn_pbr_material(x), a.x));
         break;
     case FN_ALPHA_BLEND_THRESHOLD:
-        o.f[0].x = alpha_blend_threshold(a, b, x.u.x, x.u.y);
+        o.f[0].x = alpha_blend_threshold(x.u.w, x.u.x, x.u.y);
         break;
     case FN_ALPHA_COVERS:
-        o.u.x = fn_bool(alpha_covers(x.u.z, c.x, c.y, a, b, x.u.x, x.u.y));
+        o.u.x = fn_bool(alpha_covers(x.u.z, c.x, c.y, x.u.w, x.u.x, x.u.y));
         break;
     case FN_SRGB_TO_LINEAR:
         o.f[0].x = srgb_to_linear(a.x);
