@@ -19,8 +19,9 @@ set -uo pipefail
 tp=${TWINPATH:-build/bin/twinpath}
 out=${1:-${OUT:-out/h200-sampler}}
 mkdir -p "$out"
-common=(--scenes cornell,cornell_glossy,spheres,furnace,bunny --samplers random,sobol --width 256
-  --height 256 --ref-spp 1024 --cache "$out/cache" ${ASSETS:+--assets "$ASSETS"})
+scenes=cornell,cornell_glossy,spheres,furnace,bunny samplers=random,sobol
+common=(--scenes "$scenes" --samplers "$samplers" --width 256 --height 256 --ref-spp 1024
+  --cache "$out/cache" ${ASSETS:+--assets "$ASSETS"})
 "$tp" bench --ladder "${common[@]}" --backends cpu --max-spp 256 --section h200-sampler-cpu --out "$out/cpu" || exit 1
 "$tp" bench --ladder "${common[@]}" --backends vulkan:compute --max-spp 512 --section h200-sampler-compute --out "$out/compute" || exit 1
 echo "mode,size,scene,sampler,round,seconds" >"$out/times.csv"

@@ -14,7 +14,7 @@ NEW=${NEW:-build/bin/twinpath}
 out=$(mktemp -d)
 trap 'rm -rf "$out"' EXIT
 TIMEFORMAT=%U
-for r in $(seq "${ROUNDS:-3}"); do
+for _ in $(seq "${ROUNDS:-3}"); do
   for s in cornell cornell_glossy cornell_spheres spheres furnace; do
     for b in base new; do
       tp=$BASE; [ $b = new ] && tp=$NEW
