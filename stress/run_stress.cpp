@@ -3,7 +3,9 @@
 // (--quick: the CI sizes), then stress.md and stress.json in the output directory.
 #include "stress/common.h"
 
+#include "util/clock.h"
 #include "util/error.h"
+#include "util/json_file.h"
 #include "util/output_file.h"
 #include "vulkan_rt/device/context.h"
 #include "vulkan_rt/renderer/vulkan_renderer.h"
@@ -150,8 +152,7 @@ int run_stress(const StressOptions& o) {
         }
     }
 
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double elapsed = seconds_since(t0);
     fs::create_directories(o.out_dir);
     json j;
     j["schema"] = "twinpath-stress/1";
@@ -165,7 +166,7 @@ int run_stress(const StressOptions& o) {
         j["cases"].push_back(to_json(c));
         all_pass = all_pass && (c.pass || c.skipped);
     }
-    write_output_file((fs::path(o.out_dir) / "stress.json").string(), j.dump(2) + "\n");
+    write_json((fs::path(o.out_dir) / "stress.json").string(), j);
     write_output_file((fs::path(o.out_dir) / "stress.md").string(),
                       markdown(cases, o, engines, elapsed));
     fs::remove_all(fs::path(o.out_dir) / "tmp");

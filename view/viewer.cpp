@@ -5,6 +5,7 @@
 #include "render/sampler.h"
 #include "scene/features.h"
 #include "shaders/display_interface.h"
+#include "util/clock.h"
 #include "util/error.h"
 #include "view/cpu_jobs.h"
 #include "view/overlay.h"
@@ -26,10 +27,6 @@
 
 namespace tp {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 // Mouse and key steps: a drag of one window height turns the camera by 2 radians; a wheel
 // notch dollies by 10% and, with the modifier, changes the field of view by 2 degrees; a fly
