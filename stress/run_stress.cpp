@@ -38,8 +38,9 @@ std::string escape(std::string s) {
     return s;
 }
 
-std::string markdown(const std::vector<CaseResult>& cases, const StressOptions& o,
-                     const std::vector<std::string>& engines, double elapsed) {
+// stress.md: the run's facts, the verdict counts and a row per case and backend/mode.
+std::string stress_report(const std::vector<CaseResult>& cases, const StressOptions& o,
+                          const std::vector<std::string>& engines, double elapsed) {
     size_t pass = 0, fail = 0, skip = 0;
     uint64_t nan = 0, inf = 0;
     for (const CaseResult& c : cases) {
@@ -168,7 +169,7 @@ int run_stress(const StressOptions& o) {
     }
     write_json((fs::path(o.out_dir) / "stress.json").string(), j);
     write_output_file((fs::path(o.out_dir) / "stress.md").string(),
-                      markdown(cases, o, engines, elapsed));
+                      stress_report(cases, o, engines, elapsed));
     fs::remove_all(fs::path(o.out_dir) / "tmp");
     fmt::print("stress: wrote {}/stress.md and stress.json ({} cases, {})\n", o.out_dir,
                cases.size(), all_pass ? "all passed" : "some FAILED");
