@@ -3,7 +3,8 @@
 #include "image/exr_io.h"
 #include "tools/lab/cycles_script.h"
 #include "tools/lab/peer_scene.h"
-#include "util/error.h"
+#include "util/json_file.h"
+#include "util/output_file.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
@@ -119,10 +120,8 @@ void write_cycles_scene(const FlatScene& s, const std::string& dir) {
                        {"width", c.width},
                        {"height", c.height},
                        {"max_depth", s.params.max_depth}};
-    std::ofstream(fs::path(dir) / "scene.json") << desc.dump(1) << "\n";
-    std::ofstream script(fs::path(dir) / "cycles_scene.py");
-    script << kCyclesScript;
-    if (!script) runtime_error("cannot write {}", (fs::path(dir) / "cycles_scene.py").string());
+    write_json((fs::path(dir) / "scene.json").string(), desc);
+    write_output_file((fs::path(dir) / "cycles_scene.py").string(), kCyclesScript);
 }
 
 CyclesRun run_cycles(const std::string& blender, const std::string& dir, const std::string& exr,

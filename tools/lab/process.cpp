@@ -1,5 +1,7 @@
 #include "tools/lab/process.h"
 
+#include "util/clock.h"
+
 #include <cerrno>
 #include <chrono>
 #include <fcntl.h>
@@ -34,7 +36,7 @@ ProcessRun run_process(const std::vector<std::string>& argv, const std::string& 
     int status = 0;
     while (waitpid(pid, &status, 0) < 0)
         if (errno != EINTR) return r;
-    r.wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    r.wall_s = seconds_since(t0);
     r.exit_code = WIFEXITED(status) ? WEXITSTATUS(status) : -1;
     return r;
 }
