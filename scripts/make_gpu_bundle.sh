@@ -1,11 +1,9 @@
 #!/usr/bin/env bash
 # Builds the gpu-bundle preset and packs a self-contained folder for headless GPU nodes that
-# have only a driver: bin/twinpath; bin/twinpath-lab with its ray counter, for the peer
-# comparisons on the node's CPU (docs/bench.md, "GPU rows, on the GPU machine"); the shared
-# libraries they need beyond glibc, libstdc++, libm, libgcc_s and the Vulkan loader (in lib/,
-# found through the executables' RPATH); and the bundled scenes. Output:
-# build-gpu-bundle/twinpath-bundle/ and twinpath-bundle.tar.xz. Limits (small enough to carry to
-# a GPU node with the scene): 60 MB unpacked, 20 MB compressed.
+# have only a driver: bin/twinpath, the shared libraries it needs beyond glibc, libstdc++,
+# libm, libgcc_s and the Vulkan loader (in lib/, found through the executable's RPATH), and
+# the bundled scenes. Output: build-gpu-bundle/twinpath-bundle/ and twinpath-bundle.tar.xz.
+# Limits (small enough to carry to a GPU node with the scene): 60 MB unpacked, 20 MB compressed.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake --preset gpu-bundle >/dev/null
@@ -15,16 +13,15 @@ build=build-gpu-bundle
 dest=$build/twinpath-bundle
 rm -rf "$dest" "$build/twinpath-bundle.tar.xz"
 mkdir -p "$dest/bin" "$dest/lib" "$dest/scenes"
-cp "$build/bin/twinpath" "$build/bin/twinpath-lab" "$build/bin/twinpath_ray_counter.so" "$dest/bin/"
+cp "$build/bin/twinpath" "$dest/bin/"
 # Every bundled scene: the JSON ones and the glTF example (self-contained: data URIs).
 cp scenes/*.json scenes/*.gltf "$dest/scenes/"
 
 # Libraries the node provides itself: the C runtime, the C++ runtime and the Vulkan loader.
 system='^(linux-vdso|ld-linux|libc|libm|libdl|libpthread|librt|libstdc\+\+|libgcc_s|libvulkan)\.so'
-ldd "$build/bin/twinpath" "$build/bin/twinpath-lab" | awk '/=> \// {print $1, $3}' | sort -u |
-  while read -r name path; do
-    if [[ ! "$name" =~ $system ]]; then cp -L "$path" "$dest/lib/$name"; fi
-  done
+ldd "$build/bin/twinpath" | awk '/=> \// {print $1, $3}' | while read -r name path; do
+  if [[ ! "$name" =~ $system ]]; then cp -L "$path" "$dest/lib/$name"; fi
+done
 
 tar -C "$build" -cJf "$build/twinpath-bundle.tar.xz" twinpath-bundle
 unpacked=$(du -sb "$dest" | cut -f1)
