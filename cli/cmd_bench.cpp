@@ -4,6 +4,7 @@
 #include "commands.h"
 
 #include "bench/host_info.h"
+#include "bench/image_options.h"
 #include "bench/options.h"
 #include "bench/quick.h"
 #include "bench/run_bench.h"
@@ -103,14 +104,7 @@ Subcommand add_bench_command(CLI::App& app) {
         ->check(CLI::IsMember({"random", "sobol"}))
         ->capture_default_str();
     c->add_option("--device", o.device, "Vulkan device index or name substring");
-    c->add_option("--width", o.width, "Image width")
-        ->check(CLI::Range(1u, 16384u))
-        ->capture_default_str();
-    c->add_option("--height", o.height, "Image height")
-        ->check(CLI::Range(1u, 16384u))
-        ->capture_default_str();
-    c->add_option("--max-depth", o.max_depth, "Maximum depth (default: each scene's)")
-        ->check(CLI::Range(1u, 1000u));
+    add_image_options(c, o);
     c->add_option("--max-spp", o.max_spp, "Ladder: 1, 2, 4, ... up to this spp")
         ->check(CLI::Range(1u, 1u << 24))
         ->capture_default_str();

@@ -3,7 +3,7 @@
 // bad input, 3 runtime failure (no device, out of memory, device lost).
 #include "commands.h"
 #include "scene/text_parse.h"
-#include "util/error.h"
+#include "util/run_command.h"
 #include "vulkan_rt/renderer/vulkan_renderer.h"
 
 #include <fmt/core.h>
@@ -41,31 +41,5 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        app.exit(e);
-        return 2;
-    }
-    try {
-        for (const tp::Subcommand& c : commands)
-            if (c.app->parsed()) return c.run();
-        return 2;
-    } catch (const tp::InputError& e) {
-        fmt::print(stderr, "twinpath: error: {}\n", e.what());
-        return 2;
-    } catch (const tp::RuntimeError& e) {
-        fmt::print(stderr, "twinpath: error: {}\n", e.what());
-        return 3;
-    } catch (const std::bad_alloc&) {
-        fmt::print(stderr, "twinpath: error: out of host memory\n");
-        return 3;
-    } catch (const std::exception& e) {
-        fmt::print(stderr, "twinpath: internal error: {}\n", e.what());
-        return 3;
-    }
+    return tp::parse_and_run(app, argc, argv, commands, "twinpath");
 }

@@ -4,6 +4,7 @@
 #include "tools/lab/commands.h"
 
 #include "bench/host_info.h"
+#include "bench/image_options.h"
 #include "bench/options.h"
 #include "bench/quick.h"
 #include "bench/scenes.h"
@@ -30,14 +31,7 @@ Subcommand add_peer_command(CLI::App& app) {
         ->delimiter(',')
         ->check(CLI::IsMember({"random", "sobol"}))
         ->capture_default_str();
-    c->add_option("--width", o.width, "Image width")
-        ->check(CLI::Range(1u, 16384u))
-        ->capture_default_str();
-    c->add_option("--height", o.height, "Image height")
-        ->check(CLI::Range(1u, 16384u))
-        ->capture_default_str();
-    c->add_option("--max-depth", o.max_depth, "Maximum depth (default: each scene's)")
-        ->check(CLI::Range(1u, 1000u));
+    bench::add_image_options(c, o);
     c->add_option("--ref-spp", o.ref_spp, "Reference spp of each renderer (cached)")
         ->check(CLI::Range(1u, 1u << 24))
         ->capture_default_str();

@@ -5,7 +5,7 @@
 // failure.
 #include "tools/lab/commands.h"
 
-#include "util/error.h"
+#include "util/run_command.h"
 
 #include <fmt/core.h>
 
@@ -16,31 +16,5 @@ int main(int argc, char** argv) {
     app.require_subcommand(1);
     const std::vector<tp::lab::Subcommand> commands = {tp::lab::add_peer_command(app),
                                                        tp::lab::add_markdown_command(app)};
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        app.exit(e);
-        return 2;
-    }
-    try {
-        for (const tp::lab::Subcommand& c : commands)
-            if (c.app->parsed()) return c.run();
-        return 2;
-    } catch (const tp::InputError& e) {
-        fmt::print(stderr, "twinpath-lab: error: {}\n", e.what());
-        return 2;
-    } catch (const tp::RuntimeError& e) {
-        fmt::print(stderr, "twinpath-lab: error: {}\n", e.what());
-        return 3;
-    } catch (const std::bad_alloc&) {
-        fmt::print(stderr, "twinpath-lab: error: out of host memory\n");
-        return 3;
-    } catch (const std::exception& e) {
-        fmt::print(stderr, "twinpath-lab: internal error: {}\n", e.what());
-        return 3;
-    }
+    return tp::parse_and_run(app, argc, argv, commands, "twinpath-lab");
 }
