@@ -1,4 +1,5 @@
-// twinpath: one executable, subcommands render, view, compare, merge, bench, pathdiff, info.
+// twinpath: one executable, subcommands render, view, verify, compare, merge, bench, pathdiff,
+// info.
 // Exit codes: 0 success (compare: consistent), 1 compare found a difference, 2 bad usage or
 // bad input, 3 runtime failure (no device, out of memory, device lost).
 #include "commands.h"
@@ -24,7 +25,7 @@ int main(int argc, char** argv) {
     const std::vector<tp::Subcommand> commands = {
         tp::add_render_command(app), tp::add_compare_command(app), tp::add_merge_command(app),
         tp::add_info_command(app),   tp::add_bench_command(app),   tp::add_pathdiff_command(app),
-        tp::add_view_command(app),
+        tp::add_view_command(app),   tp::add_verify_command(app),
     };
     // CLI11 would call an unknown first word a missing subcommand: name it and list them.
     if (argc > 1 && argv[1][0] != '-') {
