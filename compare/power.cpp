@@ -25,16 +25,25 @@ double log_bisect(double lo, double hi, Reaches&& reaches) {
 
 } // namespace
 
+PowerModel PowerModel::lower_bound(double z) const {
+    if (!informative()) return *this;
+    const double f = std::max(0.25, 1.0 - z * signal_se / signal);
+    PowerModel m = *this;
+    m.signal *= f;
+    m.signal_corr *= f;
+    m.signal_se *= f;
+    return m;
+}
+
 PowerModel power_model(int width, int height, const Planes& mean, const Planes& sample_variance,
-                       const std::array<double, 3>& correlation, int tile) {
+                       const std::array<double, 3>& correlation, int tile,
+                       const VarianceSplit* split) {
     tile = std::max(1, std::min(tile, std::max(width, height)));
     const int tx = (width + tile - 1) / tile, ty = (height + tile - 1) / tile;
     const size_t k = size_t(tx) * size_t(ty);
-    std::array<std::vector<double>, 3> sum_mean, sum_var;
-    for (size_t c = 0; c < 3; ++c) {
-        sum_mean[c].assign(k, 0.0);
-        sum_var[c].assign(k, 0.0);
-    }
+    std::array<std::vector<double>, 3> sum_mean, sum_var, sum_a, sum_b;
+    for (size_t c = 0; c < 3; ++c)
+        for (auto* v : {&sum_mean, &sum_var, &sum_a, &sum_b}) (*v)[c].assign(k, 0.0);
     for (int y = 0; y < height; ++y)
         for (int x = 0; x < width; ++x) {
             const size_t i = size_t(y) * size_t(width) + size_t(x);
@@ -43,6 +52,10 @@ PowerModel power_model(int width, int height, const Planes& mean, const Planes& 
                 if (sample_variance[c][i] > 0.0) {
                     sum_mean[c][j] += mean[c][i];
                     sum_var[c][j] += sample_variance[c][i];
+                    if (split) {
+                        sum_a[c][j] += (*split->a)[c][i];
+                        sum_b[c][j] += (*split->b)[c][i];
+                    }
                 }
         }
     PowerModel m;
@@ -68,6 +81,18 @@ PowerModel power_model(int width, int height, const Planes& mean, const Planes& 
             }
         }
         m.signal_corr += quad;
+    }
+    if (split) {
+        const double da = split->dof_a, db = split->dof_b;
+        double var = 0.0;
+        for (size_t j = 0; j < k; ++j) {
+            double change = 0.0; // of the signal, per unit of (V_a - V_b) in every channel
+            for (size_t c = 0; c < 3; ++c)
+                if (sum_var[c][j] > 0.0)
+                    change += s[c][j] * s[c][j] / sum_var[c][j] * (sum_a[c][j] - sum_b[c][j]);
+            var += change * change * da * db / ((da + db) * (da + db));
+        }
+        m.signal_se = std::sqrt(var);
     }
     return m;
 }

@@ -37,16 +37,37 @@ struct PowerModel {
     double signal_corr = 0; // sum_j s_j^T R s_j with s_jc = S_jc / sqrt(V_jc)
     double null_mean = 0;   // sum_c K_c: tile-channels with a variance
     double null_var = 0;    // 2 sum_c K_c + 4 sum_q K_q r_q^2
+    // The standard error of `signal` from the error of the V_jc estimates (VarianceSplit); 0
+    // when not estimated.
+    double signal_se = 0;
     // False when no tile has any variance: no sample count makes a bias visible to the model
     // (and every difference of such images is found through the floor, differences.h).
     bool informative() const { return signal > 0.0; }
+    // The model at the lower confidence bound signal - z se (at least a quarter of signal):
+    // signal and signal_corr both scale as 1 / V.
+    PowerModel lower_bound(double z) const;
+};
+
+// Two independent estimates of the per-sample variance, with their degrees of freedom, whose
+// pooled value (weighted by the degrees of freedom) is the one the model is built from. The
+// error of a tile's V_jc is unknown from one estimate; from two, the difference of their tile
+// sums estimates it: Var(V_pooled) = (V_a - V_b)^2 d_a d_b / (d_a + d_b)^2 (the pooled value
+// weights each by its d, and Var(V_a - V_b) = v (1 / d_a + 1 / d_b) for a variance v per degree
+// of freedom). A tile's error moves the signal by -sum_c (S_jc / V_jc)^2 dV_jc (its channels'
+// errors together, since they come from the same paths); tiles are independent.
+struct VarianceSplit {
+    const Planes* a = nullptr;
+    const Planes* b = nullptr;
+    double dof_a = 0, dof_b = 0;
 };
 
 // `mean` and `sample_variance`: per pixel-channel mu and sigma^2 of one sample, estimated from
 // any renderings of the scene; `correlation`: R's RG, RB, GB (TileTest::correlation); `tile`:
-// the global test's tile side, clipped to the image as compare clips it.
+// the global test's tile side, clipped to the image as compare clips it; `split`: when given,
+// signal_se from it.
 PowerModel power_model(int width, int height, const Planes& mean, const Planes& sample_variance,
-                       const std::array<double, 3>& correlation, int tile);
+                       const std::array<double, 3>& correlation, int tile,
+                       const VarianceSplit* split = nullptr);
 
 // 1 / (1 / n_a + 1 / n_b).
 double effective_spp(double n_a, double n_b);

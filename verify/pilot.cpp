@@ -14,16 +14,22 @@ NoiseEstimate estimate_noise(const std::vector<RgbImage>& pilots) {
     for (size_t c = 0; c < 3; ++c) {
         std::vector<double> sum_mean(n, 0.0), sum_var(n, 0.0);
         double samples = 0, dof = 0;
-        for (const RgbImage& p : pilots) {
-            const double spp = double(p.spp.value_or(1));
+        for (size_t k = 0; k < pilots.size(); ++k) {
+            const RgbImage& p = pilots[k];
+            const double spp = double(p.spp.value_or(1)), d = std::max(spp - 1.0, 0.0);
             samples += spp;
-            dof += std::max(spp - 1.0, 0.0);
+            dof += d;
+            if (k < 2) {
+                e.pilot_variance[k][c].resize(n);
+                e.pilot_dof[k] = d;
+            }
             for (size_t i = 0; i < n; ++i) {
                 sum_mean[i] += spp * p.mean[c][i];
                 const double s2 = p.has_sample_variance() ? p.sample_var[c][i]
                                   : p.has_variance()      ? p.var[c][i] * spp
                                                           : 0.0;
-                sum_var[i] += std::max(spp - 1.0, 0.0) * s2;
+                sum_var[i] += d * s2;
+                if (k < 2) e.pilot_variance[k][c][i] = s2;
             }
         }
         e.mean[c].resize(n);
@@ -39,8 +45,12 @@ NoiseEstimate estimate_noise(const std::vector<RgbImage>& pilots) {
 }
 
 PowerModel noise_power_model(const NoiseEstimate& noise) {
+    const bool two = noise.pilot_dof[0] > 0.0 && noise.pilot_dof[1] > 0.0;
+    const VarianceSplit split{&noise.pilot_variance[0], &noise.pilot_variance[1],
+                              noise.pilot_dof[0], noise.pilot_dof[1]};
     return power_model(noise.width, noise.height, noise.mean, noise.sample_variance,
-                       noise.correlation, kDefaultTile);
+                       noise.correlation, kDefaultTile, two ? &split : nullptr)
+        .lower_bound(kNoiseConfidenceZ);
 }
 
 EngineCost engine_cost(const EngineRun& pilot, int lane) {

@@ -16,7 +16,17 @@ struct NoiseEstimate {
     Planes mean;                         // per pixel-channel, over every pilot's samples
     Planes sample_variance;              // the variance of one sample, pooled over the pilots
     std::array<double, 3> correlation{}; // RG, RB, GB of the tile test between the first two
+    // The first two pilots' own estimates and degrees of freedom (compare/power.h,
+    // VarianceSplit), from which the error of the pooled one follows.
+    std::array<Planes, 2> pilot_variance;
+    std::array<double, 2> pilot_dof{};
 };
+
+// The one-sided confidence the plan takes the noise with: the signal of compare's power model
+// at its lower 90 % bound (z = 1.2816), so that the error of the pilots' estimate makes a plan
+// fall short of its power no more than one time in ten. Without it, the plans measured on
+// cornell reached a power of 0.86 instead of 0.9 (docs/debugging.md, "The plan").
+constexpr double kNoiseConfidenceZ = 1.2816;
 
 // Under H0 every engine estimates the same mean with the same per-sample variance sigma^2, so
 // the pilots' estimates pool: the means weighted by their samples, the sample variances by
@@ -27,7 +37,8 @@ struct NoiseEstimate {
 // pilots, which are independent (seeds.h).
 NoiseEstimate estimate_noise(const std::vector<RgbImage>& pilots);
 
-// compare's power model (compare/power.h) of this noise at compare's default tile size.
+// compare's power model (compare/power.h) of this noise at compare's default tile size, at the
+// lower confidence bound of its signal (kNoiseConfidenceZ) when there are two pilots.
 PowerModel noise_power_model(const NoiseEstimate& noise);
 
 // What an engine's samples cost, from its pilot (plan.h).

@@ -74,6 +74,8 @@ Triage triage(Engine& a, Engine& b, const CompareResult& r, uint32_t seed, uint3
         pp.diff = pathdiff(a.label(), pp.run_a.path_log, b.label(), pp.run_b.path_log,
                            PathDiffTolerances{});
         t.paths.push_back(std::move(pp));
+        // No pixel can diverge before the camera ray's vertex: the rest would add nothing.
+        if (t.paths.back().diff.diverged && t.paths.back().diff.vertex == 0) break;
     }
     for (size_t i = 0; i < t.paths.size(); ++i)
         if (t.paths[i].diff.diverged &&

@@ -19,9 +19,11 @@
 
 namespace tp {
 
-// How many pixels are logged, and how many samples of each: the first diverging path shows in
-// a few samples of any pixel a bug touches (a bug confined to some paths, such as glass seen
-// through a caustic, needs the pixels where it shows, which the significance map gives).
+// How many pixels are logged at most (in the order of pick_pixels, until one diverges at its
+// first vertex, where no other can do better), and how many samples of each: the first
+// diverging path shows in a few samples of any pixel a bug touches (a bug confined to some
+// paths, such as glass seen through a caustic, needs the pixels where it shows, which the
+// significance map gives).
 constexpr size_t kTriagePixels = 3;
 constexpr uint32_t kTriageSamples = 16;
 

@@ -52,3 +52,9 @@ foreach(shader render_compute.comp render_pipeline.rgen)
   set_tests_properties(spirv_val_${shader}_debug PROPERTIES LABELS gpu
                        SKIP_REGULAR_EXPRESSION "spirv-val not found")
 endforeach()
+
+# twinpath verify (docs/debugging.md, "verify"): the same planted bugs, found and named by one
+# command with its defaults; the unmodified shader consistent; the report's commands.
+twinpath_gpu_test(gpu_verify_test SOURCES verify_cli_test.cpp LIBS nlohmann_json::nlohmann_json)
+add_dependencies(gpu_verify_test gpu_bug_shaders)
+target_compile_definitions(gpu_verify_test PRIVATE TP_BUG_SPIRV_DIR="${BUG_SPIRV_DIR}")
