@@ -82,7 +82,7 @@ int run_verify(const VerifyArgs& a) {
     fmt::print(
         "verify {}, {}x{}: {} against {}; finds a uniform bias of {} with probability {:.2g} "
         "at alpha {}\n",
-        scene.path, flat.params.camera.width, flat.params.camera.height, engines[0]->label(),
+        a.scene, flat.params.camera.width, flat.params.camera.height, engines[0]->label(),
         against, percent(detect), o.plan.power, a.alpha);
     std::fflush(stdout);
     std::unique_ptr<ProgressBar> bar;

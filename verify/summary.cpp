@@ -109,11 +109,15 @@ std::vector<std::string> verdict_lines(const VerifyResult& v, const PairVerdict&
     const std::string prefix = v.pairs.size() > 1 ? pair_name(v, pv) + ": " : "";
     std::vector<std::string> lines = {prefix + compare_verdict_line(pv.compare)};
     for (const std::string& w : pv.compare.warnings) lines.push_back("warning: " + w);
+    // What a consistent verdict rules out; the bias asked for too where the spp rendered
+    // differ from the plan's (--spp, a budget, a window that stopped).
     if (!pv.compare.different)
-        lines.push_back(fmt::format("power: at these spp a uniform bias of {} is found with "
-                                    "probability {:.2g} ({}: {:.2g})",
-                                    percent(pv.detectable), v.request.power,
-                                    percent(v.request.detect), pv.power));
+        lines.push_back(fmt::format(
+            "power: at these spp a uniform bias of {} is found with probability {:.2g}{}",
+            percent(pv.detectable), v.request.power,
+            std::fabs(pv.detectable / v.request.detect - 1.0) > 0.05
+                ? fmt::format(" (a bias of {}: {:.2g})", percent(v.request.detect), pv.power)
+                : ""));
     return lines;
 }
 

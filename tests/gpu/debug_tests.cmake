@@ -58,3 +58,10 @@ endforeach()
 twinpath_gpu_test(gpu_verify_test SOURCES verify_cli_test.cpp LIBS nlohmann_json::nlohmann_json)
 add_dependencies(gpu_verify_test gpu_bug_shaders)
 target_compile_definitions(gpu_verify_test PRIVATE TP_BUG_SPIRV_DIR="${BUG_SPIRV_DIR}")
+
+# docs/debugging.md's worked example is the output of scripts/debugging_example.sh on lavapipe:
+# the doc must match a run of the commands it shows.
+add_test(NAME debugging_example_up_to_date
+  COMMAND ${PROJECT_SOURCE_DIR}/scripts/debugging_example.sh --check $<TARGET_FILE:twinpath>
+          ${BUG_SPIRV_DIR})
+set_tests_properties(debugging_example_up_to_date PROPERTIES LABELS gpu)
