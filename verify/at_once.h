@@ -11,7 +11,7 @@
 
 namespace tp {
 
-// Engine k's progress: fraction of its current render, which render of the lane's it is.
+// Engine k's progress: the fraction of its render done.
 using AtOnceProgress = std::function<void(size_t engine, double fraction)>;
 
 // Runs `render(engine k, request k)` for every k, lanes at once. `stop` ends every render after

@@ -4,7 +4,6 @@
 #include "compare/summary.h"
 #include "image/exr_io.h"
 #include "util/output_file.h"
-#include "verify/summary.h"
 
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>

@@ -1,5 +1,6 @@
 // `twinpath verify` (docs/debugging.md, "verify"): from a scene to a verdict, and from
-// "different" to the diverging field. For engines e_0 (the reference), e_1, ...:
+// "different" to the diverging field. For engines e_0, e_1, ... (the command line: the CPU
+// reference, then the GPU's modes):
 //
 //   1. pilots: a short render on every engine at once, each with its own seed (seeds.h), which
 //      measures the noise of one sample per pixel and what a sample costs (pilot.h);
@@ -83,8 +84,9 @@ struct VerifyResult {
     bool different() const;
 };
 
-// `engines`: the reference first; at least two. Throws InputError, RuntimeError (a device
-// failure, or `stop` set by the caller) like a render.
+// `engines`: at least two; the first one's image seed is also the path logs' (seeds.h), and it
+// is A in every comparison it is part of. Throws InputError, RuntimeError (a device failure, or
+// `stop` set by the caller) like a render.
 VerifyResult verify(const std::vector<Engine*>& engines, const VerifyOptions& options,
                     const VerifyObserver& observer);
 

@@ -12,6 +12,7 @@
 #include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <fstream>
 #include <set>
 #include <string>
 
@@ -88,6 +89,7 @@ TEST_CASE("verify finds the unmodified shader consistent, and commands.sh redoes
     CHECK_THAT(r.out, Catch::Contains("consistent: p = "));
     CHECK_THAT(r.out, Catch::Contains("plan: cpu "));
     CHECK_THAT(r.out, Catch::Contains("power: at these spp a uniform bias of "));
+    CHECK(r.out.find("share samples") == std::string::npos);
     const nlohmann::json j = read_json(report + "/verify.json");
     CHECK(j["verdict"] == "consistent");
     CHECK(j["pairs"][0]["triage"].is_null());
@@ -115,6 +117,24 @@ TEST_CASE("verify finds the unmodified shader consistent, and commands.sh redoes
         INFO(file << ": " << same.out);
         CHECK(same.exit_code == 0);
     }
+}
+
+TEST_CASE("verify on a scene without light warns, plans no more than the minimum and finds the "
+          "black images consistent",
+          "[gpu][verify]") {
+    // The furnace without its emission: both engines render 0 everywhere, with variance 0.
+    const std::string dir = temp_dir("verify-dark");
+    nlohmann::json j = read_json(scenes_dir() + "/furnace.json");
+    j["materials"]["wall"].erase("Ke");
+    const std::string scene = dir + "/dark.json";
+    std::ofstream(scene) << j.dump(2);
+    const ProcessResult r =
+        run(twinpath("verify " + shell_quote(scene) + " --width 16 --height 16"));
+    INFO(r.out);
+    CHECK(r.exit_code == 0);
+    CHECK_THAT(r.out, Catch::Contains("nothing in the scene emits light"));
+    CHECK_THAT(r.out, Catch::Contains("plan: the pilots have no noise"));
+    CHECK_THAT(r.out, Catch::Contains("consistent: p = 1 "));
 }
 
 TEST_CASE("verify with a time budget too short says what it can detect in it", "[gpu][verify]") {

@@ -13,6 +13,9 @@
 #include <catch2/catch.hpp>
 
 #include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
 
 using namespace tp;
 using namespace tp::test;
@@ -40,10 +43,12 @@ TEST_CASE("verify finds a planted uniform 1% bias at the spp it plans", "[verify
     a.threads = b.threads = 2;
     CpuEngine reference(a), biased(b);
     // Trials: each a whole verification with its own seeds. At a power of exactly 0.9, 6 or
-    // fewer detections of 10 happen with probability 0.013 and 5 or fewer 0.0016; the model is
-    // conservative (it leaves out the local test and the Sobol sampler's gain: compare/power.h),
-    // so the true power, and the margin, are larger.
-    const size_t trials = 10;
+    // fewer detections of 10 happen with probability 0.013 and 5 or fewer 0.0016; the plan takes
+    // the noise at its lower 90 % confidence bound (verify/pilot.h), and the power measured with
+    // many trials is above 0.9 (BENCHMARKS.md, "verify-promise").
+    // benchmarks/verify-promise.sh runs more trials through TWINPATH_TEST_TRIALS.
+    const char* more = std::getenv("TWINPATH_TEST_TRIALS");
+    const size_t trials = more ? size_t(std::stoul(more)) : 10;
     const size_t needed = binomial_lower_bound(trials, 0.9, 0.002);
     size_t found = 0;
     for (uint32_t seed = 0; seed < trials; ++seed) {
@@ -63,5 +68,6 @@ TEST_CASE("verify finds a planted uniform 1% bias at the spp it plans", "[verify
         found += v.different();
     }
     INFO(found << " of " << trials << " found; at least " << needed << " expected");
+    std::printf("verify promise: %zu of %zu found\n", found, trials);
     CHECK(found >= needed);
 }
