@@ -21,7 +21,7 @@ struct EngineSetup {
     // The `render` arguments that give this scene, camera and film (the scene's name or file,
     // --width, --eye, --max-depth, --sampler ...), for the commands.
     std::vector<std::string> scene_args;
-    uint32_t sampler = 0; // SAMPLER_*
+    uint32_t sampler = SAMPLER_SOBOL; // SAMPLER_*, the default of render (docs/sampling.md)
     uint32_t threads = 0; // CPU threads; 0: all
 };
 
