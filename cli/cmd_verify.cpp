@@ -48,7 +48,16 @@ int run_verify(const VerifyArgs& a) {
     const double detect = parse_relative_bias("--detect", a.detect);
     if (!(a.alpha > 0.0 && a.alpha < 1.0))
         input_error("--alpha must lie strictly between 0 and 1, got {}", a.alpha);
-    if (a.report && a.report->empty()) input_error("--report: the path is empty");
+    if (a.report) {
+        // Made before any work, so that a place where it cannot be is bad input (exit 2), not a
+        // failure after the renders.
+        std::error_code ec;
+        if (a.report->empty()) input_error("--report: the path is empty");
+        std::filesystem::create_directories(*a.report, ec);
+        if (ec || !std::filesystem::is_directory(*a.report))
+            input_error("--report {}: cannot make the directory ({})", *a.report,
+                        ec ? ec.message() : "a file is in the way");
+    }
     const Scene scene = load_scene_args(a);
     const FlatScene flat = flatten(scene);
     if (const std::optional<std::string> w = dark_scene_warning(flat, scene.path))
@@ -82,8 +91,8 @@ int run_verify(const VerifyArgs& a) {
     fmt::print(
         "verify {}, {}x{}: {} against {}; finds a uniform bias of {} with probability {:.2g} "
         "at alpha {}\n",
-        a.scene, flat.params.camera.width, flat.params.camera.height, engines[0]->label(),
-        against, percent(detect), o.plan.power, a.alpha);
+        a.scene, flat.params.camera.width, flat.params.camera.height, engines[0]->label(), against,
+        percent(detect), o.plan.power, a.alpha);
     std::fflush(stdout);
     std::unique_ptr<ProgressBar> bar;
     std::string bar_phase;

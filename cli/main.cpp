@@ -1,7 +1,7 @@
 // twinpath: one executable, subcommands render, view, verify, compare, merge, bench, pathdiff,
 // info.
-// Exit codes: 0 success (compare: consistent), 1 compare found a difference, 2 bad usage or
-// bad input, 3 runtime failure (no device, out of memory, device lost).
+// Exit codes: 0 success (compare, verify: consistent), 1 compare or verify found a difference,
+// 2 bad usage or bad input, 3 runtime failure (no device, out of memory, device lost).
 #include "commands.h"
 #include "scene/text_parse.h"
 #include "util/run_command.h"

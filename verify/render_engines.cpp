@@ -3,6 +3,7 @@
 #include "cpu_ref/cpu_renderer.h"
 #include "render/render_header.h"
 #include "render/sampler.h"
+#include "util/clock.h"
 #include "util/error.h"
 #include "vulkan_rt/device/device_info.h"
 
@@ -14,12 +15,6 @@
 
 namespace tp {
 namespace {
-
-using Clock = std::chrono::steady_clock;
-
-double seconds(Clock::duration d) {
-    return std::chrono::duration<double>(d).count();
-}
 
 // Renders `scene` at the request's spp and seed through `render` (render_cpu or render_vulkan),
 // timing the set-up (up to the first pass) apart from the sampling, and the `render` flags that
@@ -35,19 +30,18 @@ EngineRun timed_render(FlatScene& scene, const EngineSetup& setup, const EngineR
     opt.debug = rq.debug;
     opt.stop = rq.stop;
     opt.progress = rq.progress;
-    const Clock::time_point t0 = Clock::now();
+    const auto t0 = std::chrono::steady_clock::now();
     std::mutex first_mutex;
-    std::optional<Clock::time_point> first; // several devices each call on_first_pass
+    std::optional<double> first_pass; // several devices each call on_first_pass
     opt.on_first_pass = [&] {
         const std::lock_guard<std::mutex> lock(first_mutex);
-        if (!first) first = Clock::now();
+        if (!first_pass) first_pass = seconds_since(t0);
     };
     EngineRun run;
     run.result = render(scene, opt);
-    const Clock::time_point t2 = Clock::now();
-    const Clock::time_point t1 = first.value_or(t2);
-    run.setup_s = seconds(t1 - t0);
-    run.sampling_s = seconds(t2 - t1);
+    const double total = seconds_since(t0);
+    run.setup_s = first_pass.value_or(total);
+    run.sampling_s = total - run.setup_s;
     run.result.stats.scene = setup.scene_path;
     run.image = render_exr(run.result, scene, opt);
     run.device = run.result.stats.device;

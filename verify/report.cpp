@@ -3,6 +3,7 @@
 #include "compare/report.h"
 #include "compare/summary.h"
 #include "image/exr_io.h"
+#include "util/json_file.h"
 #include "util/output_file.h"
 
 #include <fmt/format.h>
@@ -103,7 +104,7 @@ void write_triage_files(const std::string& dir, const VerifyResult& v, const Pai
     const std::string rel = pair_dir(v, pv) + "/";
     write_exr(dir + "/aov-" + a + ".exr", t.aov_a.image);
     write_exr(dir + "/aov-" + b + ".exr", t.aov_b.image);
-    write_output_file(dir + "/aov.json", exact_json(t.aov).dump(2) + "\n");
+    write_json(dir + "/aov.json", exact_json(t.aov));
     script.push_back(
         fmt::format("# Triage of {} against {}: the AOVs at the pixel centres, exactly "
                     "(exit 0: the same geometry)",
@@ -196,8 +197,7 @@ void write_verify_report(const std::string& dir, const VerifyResult& v, const Re
         const std::string full = dir + "/" + pd;
         std::filesystem::create_directories(full);
         write_report(full, pv.compare, v.rgb[pv.a], v.rgb[pv.b]);
-        write_output_file(full + "/compare.json",
-                          compare_json(pv.compare, v.rgb[pv.a], v.rgb[pv.b]).dump(2) + "\n");
+        write_json(full + "/compare.json", compare_json(pv.compare, v.rgb[pv.a], v.rgb[pv.b]));
         script.push_back("mkdir -p " + shell_word(pd));
         script.push_back(command({}, {"compare", engine_file_name(v.labels[pv.a]) + ".exr",
                                       engine_file_name(v.labels[pv.b]) + ".exr", "--alpha",
@@ -246,7 +246,7 @@ void write_verify_report(const std::string& dir, const VerifyResult& v, const Re
         {"wall_s",
          {{"pilots", v.pilot_wall_s}, {"images", v.image_wall_s}, {"triage", v.triage_wall_s}}},
         {"pairs", pairs}};
-    write_output_file(dir + "/verify.json", j.dump(2) + "\n");
+    write_json(dir + "/verify.json", j);
 }
 
 } // namespace tp

@@ -1,5 +1,6 @@
 #include "verify/verify.h"
 
+#include "util/clock.h"
 #include "util/error.h"
 #include "verify/at_once.h"
 #include "verify/summary.h"
@@ -10,10 +11,6 @@ namespace tp {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-double seconds_since(Clock::time_point t0) {
-    return std::chrono::duration<double>(Clock::now() - t0).count();
-}
 
 void say(const VerifyObserver& observer, const std::vector<std::string>& lines) {
     if (observer.line)

@@ -149,8 +149,9 @@ TEST_CASE("verify with a time budget too short says what it can detect in it", "
 
 TEST_CASE("verify: bad input is one message and exit 2, a mode the device lacks exit 3",
           "[gpu][verify]") {
-    for (const char* args : {"cornell --detect 0", "cornell --detect 150%", "cornell --detect x",
-                             "cornell --alpha 1", "no_such_scene", "cornell --vk-mode fast"}) {
+    for (const char* args :
+         {"cornell --detect 0", "cornell --detect 150%", "cornell --detect x", "cornell --alpha 1",
+          "no_such_scene", "cornell --vk-mode fast", "cornell --report /proc/version/report"}) {
         const ProcessResult r = run(twinpath(std::string("verify ") + args));
         INFO(args << ": " << r.out);
         CHECK(r.exit_code == 2);
