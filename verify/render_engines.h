@@ -22,7 +22,7 @@ struct EngineSetup {
     // --width, --eye, --max-depth, --sampler ...), for the commands.
     std::vector<std::string> scene_args;
     uint32_t sampler = SAMPLER_SOBOL; // SAMPLER_*, the default of render (docs/sampling.md)
-    uint32_t threads = 0; // CPU threads; 0: all
+    uint32_t threads = 0;             // CPU threads; 0: all
 };
 
 class CpuEngine : public Engine {
