@@ -1,6 +1,6 @@
-// Error against time for one backend and mode on one scene (issue 5): one render with
-// checkpoints at 1, 2, 4, ... spp (RenderOptions::checkpoints), each snapshot measured against
-// the scene's reference.
+// Error against time for one backend and mode on one scene (docs/bench.md, "Error, reference
+// and efficiency"): one render with checkpoints at 1, 2, 4, ... spp (RenderOptions::checkpoints),
+// each snapshot measured against the scene's reference.
 //
 // relMSE and MAPE are compare/metrics.h's (relative to the reference, eps = 0.01). The
 // reference is itself noisy: E[relMSE] = error of the image + mean(w Var r), so the excess

@@ -1,6 +1,7 @@
-// What one `twinpath bench` run is asked to do: which sections, scenes and backends, at which
-// size and sample counts, and where its files go. cli/cmd_bench.cpp fills it from the command line;
-// every section reads it and nothing else.
+// What one benchmark run is asked to do: which sections, scenes and backends, at which size and
+// sample counts, and where its result goes. cli/cmd_bench.cpp fills it for `twinpath bench`,
+// tools/lab/cmd_peer.cpp for the lab's peer comparison; every section reads it and nothing else,
+// and every result records it (settings).
 #pragma once
 
 #include <cstdint>
@@ -15,14 +16,13 @@ namespace tp::bench {
 constexpr uint32_t kReferenceSeed = 0x7e5f0001u;
 
 struct BenchOptions {
-    // Sections; when none is chosen the ladder runs.
-    bool ladder = false; // error against time for each backend and mode (issue 5)
-    bool table = false;  // rays/s and time over depth and spp (thesis Table 5.3)
-    bool peer = false; // the same scenes in Embree's path tracer tutorial (issue 2) and Cycles (36)
-    bool specialization = false; // scene-specialized vs all-features time per spp (issue 9)
+    // twinpath bench's sections; when none is chosen the ladder runs.
+    bool ladder = false;         // error against time for each backend and mode (ladder.h)
+    bool table = false;          // rays/s and time over depth and spp (thesis Table 5.3)
+    bool specialization = false; // scene-specialized vs all-features time per spp
     uint32_t spec_spp = 16, spec_rounds = 3; // specialization: spp per render, rounds per variant
     bool pipeline_stats = false; // specialization: the Vulkan driver's pipeline statistics
-    bool sizes = false;          // rays/s against image size (issue 34, bench/sizes.h)
+    bool sizes = false;          // rays/s against image size (bench/sizes.h)
     // Sizes: WxH (or N for NxN) in any order; each point renders at least sizes_time_s seconds,
     // best of sizes_rounds.
     std::vector<std::string> sizes_list{"64x64",     "128x128",   "256x256",  "512x512",
@@ -48,23 +48,21 @@ struct BenchOptions {
     std::vector<uint32_t> table_spp{1, 10, 100, 1000};
     uint32_t table_fixed_spp = 10, table_fixed_depth = 3;
 
-    // Peer comparison: time per sample from renders at 1 and peer_spp samples, for each
-    // thread count; path length = the scene's max depth (or max_depth).
+    // The lab's peer comparison (tools/lab/peer_section.h), recorded in every result's settings:
+    // time per sample from renders at 1 and peer_spp samples next to Embree's tutorial, for each
+    // thread count, path length = the scene's max depth (or max_depth); and time to error next
+    // to Blender's Cycles, each renderer sampling for peer_budget_s seconds.
     uint32_t peer_spp = 16;
     std::vector<uint32_t> peer_threads{1, 2};
     std::string peer_binary = "/usr/bin/pathtracer";
-    // Efficiency next to a production renderer (bench/peer_efficiency.h), at each peer_threads:
-    // seconds of sampling time per renderer, and Blender (Cycles).
     double peer_budget_s = 10;
     std::string blender = "/usr/bin/blender";
 
     std::string out_dir = "out/bench";
-    std::string cache_dir;  // empty: $TWINPATH_CACHE, $XDG_CACHE_HOME/twinpath, ~/.cache/twinpath
+    std::string cache_dir;  // empty: the project's cache directory (util/cache_dir.h)
     std::string assets_dir; // empty: $TWINPATH_ASSETS, else ../shared/assets of the source tree
-    std::string section;    // id of this run's section in the markdown file
-    std::string markdown;   // merge the section into this file (BENCHMARKS.md)
-    std::vector<std::string> from_json; // only render these results into `markdown`
-    bool quick = false;                 // CI smoke size
+    std::string section;    // id of the result's section in BENCHMARKS.md (twinpath-lab markdown)
+    bool quick = false;     // the CI smoke size (quick.h)
 
     std::string command; // the command line, recorded with every number
 };

@@ -1,14 +1,16 @@
 #include "bench/reference.h"
 
 #include "bench/options.h"
-#include "bench/scene_hash.h"
+#include "bench/renderer_version.h"
 #include "cpu_ref/cpu_renderer.h"
 #include "image/exr_io.h"
 #include "render/render_header.h"
+#include "scene/scene_hash.h"
+#include "util/cache_dir.h"
+#include "util/error.h"
 
 #include <fmt/format.h>
 
-#include <cstdlib>
 #include <filesystem>
 
 namespace fs = std::filesystem;
@@ -22,12 +24,11 @@ constexpr const char* kKeyAttribute = "twinpath:bench_key";
 
 std::string resolve_cache_dir(const std::string& option) {
     if (!option.empty()) return option;
-    if (const char* env = std::getenv("TWINPATH_CACHE")) return env;
-    if (const char* xdg = std::getenv("XDG_CACHE_HOME"))
-        return (fs::path(xdg) / "twinpath").string();
-    if (const char* home = std::getenv("HOME"))
-        return (fs::path(home) / ".cache/twinpath").string();
-    return ".cache/twinpath";
+    const std::string dir = cache_dir();
+    if (dir.empty())
+        input_error("no cache directory for the references: give --cache DIR, or set "
+                    "TWINPATH_CACHE, XDG_CACHE_HOME or HOME");
+    return dir;
 }
 
 Reference reference_for(const FlatScene& scene, const std::string& name, uint32_t spp,
@@ -36,7 +37,7 @@ Reference reference_for(const FlatScene& scene, const std::string& name, uint32_
     s.spp = spp;
     s.params.seed = kReferenceSeed; // what render_cpu sets from RenderOptions::seed
     Reference ref;
-    ref.key = fmt::format("{:016x}-{}", hash_flat_scene(s), renderer_version());
+    ref.key = fmt::format("{:016x}-{}", render_inputs_hash(s), renderer_version());
     ref.spp = spp;
     const fs::path dir = fs::path(cache_dir) / "references";
     ref.file = (dir / fmt::format("{}-{}.exr", fs::path(name).stem().string(), ref.key)).string();

@@ -21,8 +21,8 @@ struct Reference {
     uint32_t spp = 0;
 };
 
-// The cache directory: `option` if given, else $TWINPATH_CACHE, $XDG_CACHE_HOME/twinpath or
-// ~/.cache/twinpath.
+// The cache directory: `option` (--cache) if given, else the project's (util/cache_dir.h);
+// InputError when there is none, since the references need a place.
 std::string resolve_cache_dir(const std::string& option);
 
 // `scene` at the benchmark's size and depths; the reference is rendered from it with `spp`

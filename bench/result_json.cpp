@@ -27,26 +27,9 @@ double total_rays(const json& rays) {
            rays["shadow"].get<double>();
 }
 
-double secondary_rays(const json& rays) {
-    return rays["extension"].get<double>() + rays["shadow"].get<double>();
-}
-
 json mrays_per_s(const json& rays, const char* kind, double seconds) {
     if (!(seconds > 0)) return nullptr;
     return 1e-6 * (kind ? rays[kind].get<double>() : total_rays(rays)) / seconds;
-}
-
-bool has_section(const json& result, const char* name) {
-    for (const json& s : result["sections"])
-        if (s == name) return true;
-    return false;
-}
-
-std::string run_label(const json& run) {
-    const std::string label =
-        run["backend"].get<std::string>() + "/" + run["mode"].get<std::string>();
-    const std::string sampler = run.value("sampler", "random");
-    return sampler == "random" ? label : label + " " + sampler;
 }
 
 } // namespace tp::bench

@@ -1,5 +1,5 @@
-// Small pieces of the bench result's JSON (run_bench.cpp), shared by the sections that write it
-// (ladder.cpp, sweep.cpp) and the files that read it back (report_files.cpp, markdown.cpp).
+// Small pieces of the bench result's JSON (run_sections.h), shared by the sections that write it
+// (ladder.cpp, sweep.cpp, sizes.cpp) and the lab's report that reads it back (tools/lab/).
 #pragma once
 
 #include "render/stats.h"
@@ -7,7 +7,6 @@
 #include <nlohmann/json.hpp>
 
 #include <optional>
-#include <string>
 
 namespace tp::bench {
 
@@ -25,17 +24,8 @@ nlohmann::json rays_json(const RayCounts& rays);
 // Sum of the three kinds of rays_json.
 double total_rays(const nlohmann::json& rays);
 
-// Extension + shadow rays: the rays after the camera ray (thesis Table 5.3's secondary rays).
-double secondary_rays(const nlohmann::json& rays);
-
 // Rays of one kind ("camera", "extension", "shadow"; nullptr: all) per second, in millions;
 // null without a positive time.
 nlohmann::json mrays_per_s(const nlohmann::json& rays, const char* kind, double seconds);
-
-// Whether the result holds a section ("ladder", "table", "peer").
-bool has_section(const nlohmann::json& result, const char* name);
-
-// "cpu/embree", "vulkan/compute": the backend and mode of a ladder or table run.
-std::string run_label(const nlohmann::json& run);
 
 } // namespace tp::bench

@@ -2,10 +2,10 @@
 
 #include "scene/load.h"
 #include "util/error.h"
+#include "util/json_file.h"
 
 #include <cstdlib>
 #include <filesystem>
-#include <fstream>
 
 namespace fs = std::filesystem;
 
@@ -43,11 +43,7 @@ std::optional<Scene> load_bench_scene(const std::string& name, const std::string
             }
         fs::create_directories(scene_dir);
         const fs::path path = fs::path(scene_dir) / (name + ".json");
-        {
-            std::ofstream out(path);
-            out << e.generate(fs::absolute(assets_dir).lexically_normal().string()).dump(2) << "\n";
-            if (!out) runtime_error("cannot write {}", path.string());
-        }
+        write_json(path.string(), e.generate(fs::absolute(assets_dir).lexically_normal().string()));
         Scene s = load_scene(path.string(), warnings);
         s.path = name;
         return s;

@@ -1,17 +1,16 @@
-// `twinpath bench --sizes` (issue 34): rays per second against image size, for each backend and
-// mode, so that the sizes at which a device is not filled show. Each point renders one image
+// `twinpath bench --sizes`: rays per second against image size, for each backend and mode, so
+// that the sizes at which a device is not filled show. Each point renders one image
 // size for at least `--sizes-time` seconds (RenderOptions::time_limit_s: as many whole passes
 // of samples as fit, so small images get many samples) and keeps the best of `--sizes-rounds`
 // rounds; the rounds go over all sizes in turn, so that warm-up and drifting clocks spread over
 // every size alike. Rays per second are the render's own statistics: every ray traced (camera,
 // extension, shadow) over GPU time (timestamp queries) where the device measures it, else over
-// wall time (the CPU). Each rate is also given as a ratio to the same backend's rate at
-// 1920x1080 (or at the largest size measured when 1920x1080 is not).
+// wall time (the CPU). The lab's report gives each rate over the same backend's rate at
+// 1920x1080 (tools/lab/sizes_report.h).
 #pragma once
 
 #include "bench/backends.h"
 #include "bench/options.h"
-#include "bench/svg_plot.h"
 
 #include <nlohmann/json.hpp>
 
@@ -36,26 +35,10 @@ ImageSize parse_image_size(const std::string& word);
 // empty list or a malformed word.
 std::vector<ImageSize> parse_image_sizes(const std::vector<std::string>& words);
 
-// The size every rate is divided by: 1920x1080 when it is among `sizes`, else the largest.
-ImageSize ratio_base(const std::vector<ImageSize>& sizes);
-
 // The measurement on one backend and mode: `scenes[i]` is the scene flattened at `sizes[i]`.
 // The result holds the points in the order of `sizes` (docs/bench.md, "--sizes").
 nlohmann::json run_sizes(const std::vector<FlatScene>& scenes, const std::vector<ImageSize>& sizes,
                          const Backend& backend, const BenchOptions& options,
                          const std::function<void(double)>& progress);
-
-// Mrays/s of each point of a run over the same run's rate at `base`; null where either is
-// missing.
-std::vector<nlohmann::json> rate_ratios(const nlohmann::json& run, const ImageSize& base);
-
-// The plot of one scene's `sizes` runs: Mrays/s (linear) against pixels (log), one line per
-// backend and mode, the sizes labelled on the x axis.
-LinePlot sizes_plot(const nlohmann::json& scene);
-
-// The markdown of the section: the summary at the run's own image size (--width x --height)
-// against the ratio base, then per scene a table of Mrays/s, ratio and spp over the sizes, and
-// the link to its plot (scenes[i].sizes_plot, relative to `link_base`).
-std::string sizes_section(const nlohmann::json& result, const std::string& link_base);
 
 } // namespace tp::bench

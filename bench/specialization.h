@@ -1,4 +1,4 @@
-// `twinpath bench --specialization` (issue 9): for each scene and backend/mode, the time per
+// `twinpath bench --specialization`: for each scene and backend/mode, the time per
 // spp of the path loop specialized to the scene's features against the one with every feature
 // compiled in (`--features all`), as a ratio measured in one run. Renders alternate between the
 // two variants (all, scene, all, scene, ...) with the same seed, and each variant's time is the
@@ -21,8 +21,5 @@ namespace tp::bench {
 nlohmann::json run_specialization(const FlatScene& scene, const Backend& backend,
                                   const BenchOptions& options,
                                   const std::function<void(double)>& progress);
-
-// The markdown of the section: one row per scene and backend/mode.
-std::string specialization_section(const nlohmann::json& result);
 
 } // namespace tp::bench

@@ -60,4 +60,16 @@ uvec2 parse_pixel(const std::string& option, const std::string& text) {
     return v;
 }
 
+double parse_relative_bias(const std::string& option, const std::string& text) {
+    const bool pct = !text.empty() && text.back() == '%';
+    const std::string number = pct ? text.substr(0, text.size() - 1) : text;
+    double v = 0.0;
+    if (number.empty() || !CLI::detail::lexical_cast(number, v) || !std::isfinite(v))
+        input_error("{} {}: expected a relative bias such as 1% or 0.01", option, text);
+    if (pct) v /= 100.0;
+    if (!(v > 0.0 && v < 1.0))
+        input_error("{} {}: the bias must lie strictly between 0 and 100%", option, text);
+    return v;
+}
+
 } // namespace tp

@@ -1,14 +1,21 @@
 // twinpath bench's command line: the options of bench/options.h, and --stress for the stress
-// suite (stress/stress.h). The measuring is bench/run_bench.h's.
+// suite (stress/stress.h). The measuring is bench/run_bench.h's; the peer comparisons and the
+// BENCHMARKS.md writers are the lab tool's (tools/lab).
 #include "commands.h"
 
 #include "bench/host_info.h"
+#include "bench/image_options.h"
 #include "bench/options.h"
+#include "bench/quick.h"
 #include "bench/run_bench.h"
 #include "bench/scenes.h"
 #include "stress/stress.h"
+#include "util/error.h"
 
 #include <filesystem>
+#include <memory>
+#include <string>
+#include <vector>
 
 namespace fs = std::filesystem;
 
@@ -17,23 +24,31 @@ namespace {
 
 using namespace bench;
 
-// --quick: a CI smoke size, for each setting the user did not give.
-void apply_quick(BenchOptions& o, const CLI::App& c) {
-    const auto unset = [&](const char* opt) { return c.count(opt) == 0; };
-    if (unset("--width")) o.width = 24;
-    if (unset("--height")) o.height = 24;
-    if (unset("--max-spp")) o.max_spp = 4;
-    if (unset("--ref-spp")) o.ref_spp = 32;
-    if (unset("--scenes")) o.scenes = {"cornell"};
-    if (unset("--table-depths")) o.table_depths = {1, 2};
-    if (unset("--table-spp")) o.table_spp = {1, 4};
-    if (unset("--table-fixed-spp")) o.table_fixed_spp = 2;
-    if (unset("--table-fixed-depth")) o.table_fixed_depth = 2;
-    if (unset("--peer-spp")) o.peer_spp = 2;
-    if (unset("--sizes-list")) o.sizes_list = {"8x8", "16x16"};
-    if (unset("--sizes-time")) o.sizes_time_s = 0.02;
-    if (unset("--sizes-rounds")) o.sizes_rounds = 1;
-    if (unset("--peer-budget")) o.peer_budget_s = 0.2;
+// The flags and options of the peer comparisons and the BENCHMARKS.md writers, which are the
+// lab tool's now (docs/bench.md, "The lab"): out of the help, each names what to run instead.
+struct MovedOption {
+    const char* name;
+    bool flag;
+    const char* instead;
+};
+constexpr const char* kLabPeer = "twinpath-lab peer";
+constexpr const char* kLabMarkdown = "twinpath-lab markdown OUT/bench.json --markdown FILE";
+constexpr MovedOption kMovedOptions[] = {
+    {"--peer", true, kLabPeer},          {"--peer-spp", false, kLabPeer},
+    {"--peer-threads", false, kLabPeer}, {"--peer-binary", false, kLabPeer},
+    {"--peer-budget", false, kLabPeer},  {"--blender", false, kLabPeer},
+    {"--markdown", false, kLabMarkdown}, {"--from-json", false, kLabMarkdown}};
+
+void add_moved_options(CLI::App* c, std::vector<std::string>& values) {
+    for (const MovedOption& m : kMovedOptions)
+        (m.flag ? c->add_flag(m.name) : c->add_option(m.name, values))->group("");
+}
+
+void refuse_moved_options(const CLI::App& c) {
+    for (const MovedOption& m : kMovedOptions)
+        if (c.count(m.name))
+            input_error("bench {} moved to the lab tool: {} (docs/bench.md, \"The lab\")", m.name,
+                        m.instead);
 }
 
 } // namespace
@@ -48,8 +63,6 @@ Subcommand add_bench_command(CLI::App& app) {
     CLI::App* c = app.add_subcommand("bench", "Benchmark run time against error (BENCHMARKS.md)");
     c->add_flag("--ladder", o.ladder, "Error against time for each backend/mode (the default)");
     c->add_flag("--table", o.table, "Rays/s and time over depth and spp (thesis Table 5.3)");
-    c->add_flag("--peer", o.peer,
-                "Time per spp next to Embree's path tracer tutorial; time to error next to Cycles");
     c->add_flag("--specialization", o.specialization,
                 "Time per spp: scene-specialized path loop against --features all");
     c->add_option("--spec-spp", o.spec_spp, "Specialization: spp of each timed render")
@@ -91,14 +104,7 @@ Subcommand add_bench_command(CLI::App& app) {
         ->check(CLI::IsMember({"random", "sobol"}))
         ->capture_default_str();
     c->add_option("--device", o.device, "Vulkan device index or name substring");
-    c->add_option("--width", o.width, "Image width")
-        ->check(CLI::Range(1u, 16384u))
-        ->capture_default_str();
-    c->add_option("--height", o.height, "Image height")
-        ->check(CLI::Range(1u, 16384u))
-        ->capture_default_str();
-    c->add_option("--max-depth", o.max_depth, "Maximum depth (default: each scene's)")
-        ->check(CLI::Range(1u, 1000u));
+    add_image_options(c, o);
     c->add_option("--max-spp", o.max_spp, "Ladder: 1, 2, 4, ... up to this spp")
         ->check(CLI::Range(1u, 1u << 24))
         ->capture_default_str();
@@ -120,40 +126,24 @@ Subcommand add_bench_command(CLI::App& app) {
     c->add_option("--table-fixed-depth", o.table_fixed_depth, "Table: depth of the spp rows")
         ->check(CLI::Range(1u, 1000u))
         ->capture_default_str();
-    c->add_option("--peer-spp", o.peer_spp, "Peer: N of the (t(N) - t(1)) / (N - 1) timing")
-        ->check(CLI::Range(1u, 1u << 20))
-        ->capture_default_str();
-    c->add_option("--peer-threads", o.peer_threads, "Peer: thread counts")
-        ->delimiter(',')
-        ->check(CLI::Range(1u, 4096u))
-        ->capture_default_str();
-    c->add_option("--peer-binary", o.peer_binary, "Embree's path tracer tutorial")
-        ->capture_default_str();
-    c->add_option("--peer-budget", o.peer_budget_s,
-                  "Peer: seconds of sampling per renderer in the time-to-error table")
-        ->check(CLI::Range(0.01, 1e6))
-        ->capture_default_str();
-    c->add_option("--blender", o.blender, "Peer: Blender, whose Cycles renders the scenes too")
-        ->capture_default_str();
     c->add_option("--out", o.out_dir, "Output directory")->capture_default_str();
     c->add_option("--cache", o.cache_dir,
-                  "Reference cache (default $TWINPATH_CACHE, $XDG_CACHE_HOME/twinpath, "
+                  "Reference cache (default: $TWINPATH_CACHE, $XDG_CACHE_HOME/twinpath, "
                   "~/.cache/twinpath)");
     c->add_option("--assets", o.assets_dir,
                   "Shared test meshes (default $TWINPATH_ASSETS, else ../shared/assets)");
-    c->add_option("--section", o.section, "Id of this run's section in the markdown file")
+    c->add_option("--section", o.section,
+                  "Id of the result's section in BENCHMARKS.md (twinpath-lab markdown)")
         ->capture_default_str();
-    c->add_option("--markdown", o.markdown, "Merge the section into this file (BENCHMARKS.md)");
-    c->add_option("--from-json", o.from_json,
-                  "No rendering: plots, CSV and bench.md again beside each of these bench.json "
-                  "files, and their sections merged into --markdown")
-        ->delimiter(',');
     c->add_flag("--quick", o.quick, "Tiny CI smoke size");
-    // Issue 8: the numerical stress sweeps (stress, docs/stress.md) instead of benchmarks;
-    // they use --out (default out/stress), --assets, --backends, --device, --threads, --quick.
+    // The numerical stress sweeps (stress, docs/stress.md) instead of benchmarks; they use --out
+    // (default out/stress), --assets, --backends, --device, --threads, --quick.
     auto stress = std::make_shared<bool>(false);
     c->add_flag("--stress", *stress, "Numerical stress sweeps and their report (docs/stress.md)");
-    return {c, [options, c, stress] {
+    auto moved = std::make_shared<std::vector<std::string>>();
+    add_moved_options(c, *moved);
+    return {c, [options, c, stress, moved] {
+                refuse_moved_options(*c);
                 BenchOptions& o = *options;
                 o.command = command_line();
                 if (*stress) {
@@ -168,8 +158,8 @@ Subcommand add_bench_command(CLI::App& app) {
                     so.command = o.command;
                     return stress::run_stress(so);
                 }
-                if (!o.from_json.empty()) return render_results(o);
-                if (o.quick) apply_quick(o, *c);
+                if (o.quick)
+                    apply_quick(o, [&](const std::string& opt) { return c->count(opt) > 0; });
                 return run_bench(o);
             }};
 }

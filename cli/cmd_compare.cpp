@@ -12,7 +12,7 @@
 #include "compare/summary.h"
 #include "image/png_io.h"
 #include "util/error.h"
-#include "util/output_file.h"
+#include "util/json_file.h"
 
 #include <fmt/core.h>
 
@@ -36,10 +36,6 @@ struct CompareArgs {
     double floor = kDefaultRelativeFloor;
 };
 
-void write_json(const std::optional<std::string>& path, const nlohmann::json& j) {
-    if (path) write_output_file(*path, j.dump(2) + "\n");
-}
-
 // Runs `write` to fill the report directory; where it fails, the directory goes too if this
 // call created it, so a failed report leaves nothing behind.
 template <typename Write>
@@ -58,7 +54,7 @@ int run_exact(const CompareArgs& a) {
     if (a.files.size() != 2) input_error("--exact compares two images, got {}", a.files.size());
     const ExactResult r = exact_compare(a.files[0], read_exr(a.files[0]), a.files[1],
                                         read_exr(a.files[1]), a.tolerance);
-    write_json(a.json, exact_json(r));
+    if (a.json) write_json(*a.json, exact_json(r));
     if (a.report) {
         // The mismatches as a picture: black equal, yellow on a silhouette, red elsewhere.
         std::vector<uint8_t> rgb;
@@ -84,7 +80,7 @@ int run_convergence(const CompareArgs& a) {
     std::vector<RgbImage> series;
     for (const std::string& f : a.files) series.push_back(load_rgb_image(f));
     const ConvergenceResult r = convergence(ref, series, a.alpha);
-    write_json(a.json, convergence_json(r, ref));
+    if (a.json) write_json(*a.json, convergence_json(r, ref));
     fmt::print("{}\n", convergence_verdict_line(r));
     return r.biased ? 1 : 0;
 }
@@ -99,7 +95,7 @@ int run_statistical(const CompareArgs& a) {
     opt.relative_floor = a.floor;
     const CompareResult r = compare_images(img_a, img_b, opt);
     for (const std::string& w : r.warnings) fmt::print(stderr, "twinpath: warning: {}\n", w);
-    write_json(a.json, compare_json(r, img_a, img_b));
+    if (a.json) write_json(*a.json, compare_json(r, img_a, img_b));
     if (a.report) write_report_dir(*a.report, [&] { write_report(*a.report, r, img_a, img_b); });
     fmt::print("{}\n", compare_verdict_line(r));
     return r.different ? 1 : 0;
@@ -118,7 +114,7 @@ int run_compare(const CompareArgs& a) {
         return run_statistical(a);
     } catch (const InputError& e) {
         // The JSON consumer learns why there is no result (the message names the file).
-        write_json(a.json, {{"verdict", "bad input"}, {"error", e.what()}});
+        if (a.json) write_json(*a.json, {{"verdict", "bad input"}, {"error", e.what()}});
         throw;
     }
 }

@@ -11,6 +11,7 @@
 #include "scene/gltf_loader.h"
 #include "scene/load.h"
 #include "shared/math.h"
+#include "util/clock.h"
 #include "util/error.h"
 #include "vulkan_rt/renderer/vulkan_renderer.h"
 
@@ -221,8 +222,7 @@ int scene_info(const std::string& path, bool json_out) {
     std::vector<std::string> warnings;
     const auto t0 = std::chrono::steady_clock::now();
     const Scene scene = load_scene(path, warnings);
-    const double load_seconds =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double load_seconds = seconds_since(t0);
     for (const std::string& w : warnings) fmt::print(stderr, "twinpath: warning: {}\n", w);
     const FlatScene f = flatten(scene);
     const SceneFeatures features = analyze_features(f);

@@ -10,6 +10,7 @@
 #include "image/png_io.h"
 #include "render/render_header.h"
 #include "render/sampler.h"
+#include "scene/features.h"
 #include "scene/flatten.h"
 #include "util/error.h"
 #include "util/interrupt.h"
@@ -92,6 +93,9 @@ int run_render(const RenderArgs& a) {
     debug.aov = parse_aov(a.aov);
     debug.log = a.debug_log.has_value();
     debug.sample = a.debug_sample;
+    if (debug.integrator == INTEGRATOR_PATH)
+        if (const std::optional<std::string> w = dark_scene_warning(flat, scene.path))
+            fmt::print(stderr, "twinpath: warning: {}\n", *w);
     if (debug.log != !a.debug_pixel.empty())
         input_error("--debug-log and --debug-pixel go together (the log of which pixel?)");
     if (a.debug_sample && !debug.log) input_error("--debug-sample needs --debug-log");

@@ -1,14 +1,19 @@
 // twinpath view SCENE: the interactive progressive window (view/viewer.h).
+#include "arg_parse.h"
 #include "commands.h"
 #include "scene_args.h"
 
 #include "render/sampler.h"
 #include "view/viewer.h"
 
+#include <optional>
+
 namespace tp {
 
 struct ViewArgs : SceneArgs {
     ViewOptions view;
+    std::string detect = "1%";
+    std::optional<double> time_budget;
 };
 
 Subcommand add_view_command(CLI::App& app) {
@@ -22,6 +27,11 @@ Subcommand add_view_command(CLI::App& app) {
     c->add_flag("--headless", v.headless, "No window: run the frame loop, report frame times");
     c->add_option("--spp-per-frame", v.progressive.samples_per_frame,
                   "Samples per frame (default: adapt to ~16 ms)");
+    c->add_option("--detect", a->detect,
+                  "C: the relative bias the live compare finds with probability 0.9 (default 1%)");
+    c->add_option("--time-budget", a->time_budget,
+                  "C: seconds for the live compare's renders (default: as long as --detect needs)")
+        ->check(number_in(1e-3, 1e9));
     return {c, [a] {
                 const FlatScene scene = flatten(load_scene_args(*a, 1u << 30));
                 ViewOptions v = a->view;
@@ -32,6 +42,8 @@ Subcommand add_view_command(CLI::App& app) {
                 v.progressive.seed = a->seed;
                 v.progressive.sampler = sampler_from_name(a->sampler);
                 v.progressive.max_spp = scene.spp;
+                v.verify.detect = parse_relative_bias("--detect", a->detect);
+                v.verify.budget_s = a->time_budget;
                 return run_view(scene, v);
             }};
 }

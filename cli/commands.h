@@ -20,5 +20,6 @@ Subcommand add_info_command(CLI::App& app);
 Subcommand add_bench_command(CLI::App& app);
 Subcommand add_pathdiff_command(CLI::App& app);
 Subcommand add_view_command(CLI::App& app);
+Subcommand add_verify_command(CLI::App& app);
 
 } // namespace tp

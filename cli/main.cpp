@@ -1,9 +1,10 @@
-// twinpath: one executable, subcommands render, view, compare, merge, bench, pathdiff, info.
-// Exit codes: 0 success (compare: consistent), 1 compare found a difference, 2 bad usage or
-// bad input, 3 runtime failure (no device, out of memory, device lost).
+// twinpath: one executable, subcommands render, view, verify, compare, merge, bench, pathdiff,
+// info.
+// Exit codes: 0 success (compare, verify: consistent), 1 compare or verify found a difference,
+// 2 bad usage or bad input, 3 runtime failure (no device, out of memory, device lost).
 #include "commands.h"
 #include "scene/text_parse.h"
-#include "util/error.h"
+#include "util/run_command.h"
 #include "vulkan_rt/renderer/vulkan_renderer.h"
 
 #include <fmt/core.h>
@@ -24,7 +25,7 @@ int main(int argc, char** argv) {
     const std::vector<tp::Subcommand> commands = {
         tp::add_render_command(app), tp::add_compare_command(app), tp::add_merge_command(app),
         tp::add_info_command(app),   tp::add_bench_command(app),   tp::add_pathdiff_command(app),
-        tp::add_view_command(app),
+        tp::add_view_command(app),   tp::add_verify_command(app),
     };
     // CLI11 would call an unknown first word a missing subcommand: name it and list them.
     if (argc > 1 && argv[1][0] != '-') {
@@ -41,31 +42,5 @@ int main(int argc, char** argv) {
             return 2;
         }
     }
-    try {
-        app.parse(argc, argv);
-    } catch (const CLI::CallForHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::CallForAllHelp& e) {
-        return app.exit(e);
-    } catch (const CLI::ParseError& e) {
-        app.exit(e);
-        return 2;
-    }
-    try {
-        for (const tp::Subcommand& c : commands)
-            if (c.app->parsed()) return c.run();
-        return 2;
-    } catch (const tp::InputError& e) {
-        fmt::print(stderr, "twinpath: error: {}\n", e.what());
-        return 2;
-    } catch (const tp::RuntimeError& e) {
-        fmt::print(stderr, "twinpath: error: {}\n", e.what());
-        return 3;
-    } catch (const std::bad_alloc&) {
-        fmt::print(stderr, "twinpath: error: out of host memory\n");
-        return 3;
-    } catch (const std::exception& e) {
-        fmt::print(stderr, "twinpath: internal error: {}\n", e.what());
-        return 3;
-    }
+    return tp::parse_and_run(app, argc, argv, commands, "twinpath");
 }

@@ -2,7 +2,11 @@
 
 #include "util/error.h"
 
+#include <fcntl.h>
 #include <unistd.h>
+
+#include <cerrno>
+#include <cstring>
 
 #include <filesystem>
 
@@ -26,6 +30,19 @@ void check_output_path(const std::string& option, const std::string& path) {
         input_error("{} {}: the directory {} is not writable", option, path, dir.string());
     if (fs::exists(p, ec) && access(p.c_str(), W_OK) != 0)
         input_error("{} {}: the file is not writable", option, path);
+    // A regular file is written as PATH.partial and renamed (util/output_file.h): create that
+    // file once now, so that a directory whose permission bits allow writing but whose file
+    // system refuses new files (/proc, /sys, a read-only mount, root's exemption from the bits)
+    // fails before the work too.
+    if (fs::exists(p, ec) && !fs::is_regular_file(p, ec)) return; // a device: written in place
+    const std::string partial = path + ".partial";
+    const bool existed = fs::exists(partial, ec);
+    const int fd = open(partial.c_str(), O_WRONLY | O_CREAT | O_CLOEXEC, 0644);
+    if (fd < 0)
+        input_error("{} {}: cannot create a file in {}: {}", option, path, dir.string(),
+                    std::strerror(errno));
+    close(fd);
+    if (!existed) unlink(partial.c_str());
 }
 
 // The file a path names: symbolic links and ".." resolved as far as the path exists.

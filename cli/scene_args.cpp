@@ -6,12 +6,13 @@
 
 #include <fmt/core.h>
 
+#include <filesystem>
+
 namespace tp {
 
-void add_scene_options(CLI::App* c, SceneArgs& a) {
+void add_scene_options(CLI::App* c, SceneArgs& a, const std::vector<std::string>& vk_modes) {
     c->add_option("scene", a.scene, "Scene file or bundled scene name")->required();
-    c->add_option("--vk-mode", a.vk_mode, "Vulkan mode")
-        ->check(CLI::IsMember({"auto", "compute", "pipeline"}));
+    c->add_option("--vk-mode", a.vk_mode, "Vulkan mode")->check(CLI::IsMember(vk_modes));
     c->add_option("--spp", a.spp, "Samples per pixel")->check(CLI::Range(1u, 1u << 30));
     c->add_option("--seed", a.seed, "Random seed");
     c->add_option("--sampler", a.sampler,
@@ -53,6 +54,26 @@ Scene load_scene_args(const SceneArgs& a, std::optional<uint32_t> spp) {
     o.fov = a.fov;
     apply_overrides(scene, o);
     return scene;
+}
+
+std::vector<std::string> scene_render_args(const SceneArgs& a, uint32_t width, uint32_t height) {
+    std::error_code ec;
+    const bool file = std::filesystem::is_regular_file(a.scene, ec);
+    std::vector<std::string> args = {file ? std::filesystem::absolute(a.scene).string() : a.scene,
+                                     "--width", std::to_string(width), "--height",
+                                     std::to_string(height)};
+    auto flag = [&](const char* name, const std::string& value) {
+        args.push_back(name);
+        args.push_back(value);
+    };
+    if (a.min_depth) flag("--min-depth", std::to_string(*a.min_depth));
+    if (a.max_depth) flag("--max-depth", std::to_string(*a.max_depth));
+    if (!a.eye.empty()) flag("--eye", a.eye);
+    if (!a.target.empty()) flag("--target", a.target);
+    if (!a.up.empty()) flag("--up", a.up);
+    if (a.fov) flag("--fov", fmt::format("{}", *a.fov));
+    if (a.camera) flag("--camera", std::to_string(*a.camera));
+    return args;
 }
 
 } // namespace tp

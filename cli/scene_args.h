@@ -8,6 +8,7 @@
 
 #include <optional>
 #include <string>
+#include <vector>
 
 namespace tp {
 
@@ -22,7 +23,14 @@ struct SceneArgs {
     std::optional<uint32_t> camera; // glTF: cameras[N]
 };
 
-void add_scene_options(CLI::App* c, SceneArgs& a);
+// `vk_modes`: the words --vk-mode takes (verify adds "both").
+void add_scene_options(CLI::App* c, SceneArgs& a,
+                       const std::vector<std::string>& vk_modes = {"auto", "compute", "pipeline"});
+
+// The `render` arguments that give the scene, film and camera these flags give (the scene as an
+// absolute path when it is a file, so that they work from any directory), for commands that
+// reproduce a render; `width` and `height` are the film's, always written.
+std::vector<std::string> scene_render_args(const SceneArgs& a, uint32_t width, uint32_t height);
 
 // Loads the scene (warnings on stderr) and applies the flags; `spp` replaces a missing --spp.
 Scene load_scene_args(const SceneArgs& a, std::optional<uint32_t> spp = std::nullopt);

@@ -8,8 +8,30 @@
 
 #include <algorithm>
 #include <cmath>
+#include <optional>
 
 namespace tp {
+namespace {
+
+// Two renderings that share samples of one seed's sequence with the same sampler trace the same
+// paths there (shared/rng.h): their difference is not that of independent estimates, which
+// every test here assumes, and at the extreme (a file against itself) it is 0 whatever the
+// images hold.
+std::optional<std::string> shared_samples(const RgbImage& a, const RgbImage& b) {
+    if (a.sampler.empty() || a.sampler != b.sampler) return std::nullopt;
+    for (const SampleRange& ra : a.sample_ranges)
+        for (const SampleRange& rb : b.sample_ranges)
+            if (ra.seed == rb.seed && ra.begin < rb.end && rb.begin < ra.end)
+                return fmt::format(
+                    "{} and {} share samples {} to {} of seed {} ({} sampler): they trace the "
+                    "same paths there, so the test's independence does not hold and "
+                    "\"consistent\" proves nothing; render one of them with another --seed",
+                    a.path, b.path, std::max(ra.begin, rb.begin), std::min(ra.end, rb.end) - 1,
+                    ra.seed, a.sampler);
+    return std::nullopt;
+}
+
+} // namespace
 
 CompareResult compare_images(const RgbImage& a, const RgbImage& b, const CompareOptions& opt) {
     require_same_size(a, b);
@@ -32,6 +54,7 @@ CompareResult compare_images(const RgbImage& a, const RgbImage& b, const Compare
             r.warnings.push_back(fmt::format(
                 "{} has no twinpath:spp: its variance is taken as exact (normal p-values{})",
                 img->path, two ? "" : ", tiles not enlarged"));
+    if (std::optional<std::string> w = shared_samples(a, b)) r.warnings.push_back(*w);
     int tile = opt.tile;
     const RgbImage& noisy = a.has_variance() ? a : b;
     if (!two && noisy.spp)

@@ -56,4 +56,8 @@ double chi2_upper(double x, double k) {
     return boost::math::cdf(boost::math::complement(boost::math::chi_squared(k), x));
 }
 
+double chi2_upper_quantile(double p, double k) {
+    return boost::math::quantile(boost::math::complement(boost::math::chi_squared(k), p));
+}
+
 } // namespace tp

@@ -173,6 +173,9 @@ PathDiffResult pathdiff(const std::string& name_a, const json& a, const std::str
                 r.sample = s;
                 r.vertex = n;
                 r.field = "vertex count";
+                r.value_a = std::to_string(va.size());
+                r.value_b = std::to_string(vb.size());
+                r.why = "every shared field agrees";
                 r.report = fmt::format(
                     "{}paths diverge at sample {}: A has {} vertices, B has {} (every shared "
                     "field agrees)\nlast shared vertex {}:\n{}",
@@ -190,6 +193,9 @@ PathDiffResult pathdiff(const std::string& name_a, const json& a, const std::str
                 r.sample = s;
                 r.vertex = v;
                 r.field = f.name;
+                r.value_a = show(va[v].value(f.name, json()));
+                r.value_b = show(vb[v].value(f.name, json()));
+                r.why = why;
                 std::string prev =
                     v == 0 ? "(the first vertex: the camera ray)\n"
                            : fmt::format("vertex {} before it agrees within tolerance\n", v - 1);

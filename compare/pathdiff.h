@@ -26,7 +26,9 @@ struct PathDiffResult {
     uint32_t sample = 0;
     size_t vertex = 0;
     std::string field;
-    std::string report; // the human-readable account, several lines
+    std::string value_a, value_b; // the field's values as the report shows them
+    std::string why;              // which component differs by how much, against which tolerance
+    std::string report;           // the human-readable account, several lines
 };
 
 // Throws InputError naming the file for a missing or malformed log, or logs of different

@@ -2,6 +2,7 @@
 
 #include "image/exr_io.h"
 #include "render/film.h"
+#include "render/render_header.h"
 #include "util/error.h"
 
 #include <array>
@@ -98,6 +99,15 @@ RgbImage rgb_image_from_exr(const ExrImage& img, const std::string& path) {
             input_error("{}: twinpath:variance_dof is {}, expected >= 1", path, it->second);
         out.variance_dof = it->second;
     }
+    if (auto it = img.strings.find(header::kSampleRanges); it != img.strings.end()) {
+        try {
+            out.sample_ranges = parse_sample_ranges(it->second, path);
+        } catch (const InputError&) {
+            out.sample_ranges.clear();
+        }
+    }
+    if (auto it = img.strings.find(header::kSampler); it != img.strings.end())
+        out.sampler = it->second;
     return out;
 }
 

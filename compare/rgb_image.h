@@ -4,6 +4,8 @@
 // names the file (exit 2).
 #pragma once
 
+#include "render/stats.h"
+
 #include <array>
 #include <cstdint>
 #include <optional>
@@ -26,6 +28,11 @@ struct RgbImage {
     // twinpath:variance_dof: degrees of freedom of the variance estimate when it is not the
     // sample variance of spp samples (spp - 1), e.g. K - 1 from K batch means (render/film.h).
     std::optional<int64_t> variance_dof;
+    // twinpath:sample_ranges and twinpath:sampler (render/render_header.h): which samples of
+    // which seed's sequence the image holds; empty when the header does not say (or says it in
+    // a form compare cannot read: only the independence warning uses them).
+    std::vector<SampleRange> sample_ranges;
+    std::string sampler;
 
     bool has_variance() const { return !var[0].empty(); }
     bool has_sample_variance() const { return !sample_var[0].empty(); }

@@ -81,8 +81,12 @@ TileTest tile_test(const Differences& d, int tile) {
         double sum = 0.0;
         size_t both = 0;
         for (size_t j = 0; j < k; ++j) {
-            if (!counted(c0, j) || !counted(c1, j)) continue;
-            sum += sum_cross[q][j] / std::sqrt(sum_var[c0][j] * sum_var[c1][j]);
+            // A tile-channel without any variance, not even the floor's, is 0 in both images
+            // everywhere (differences.h): it has no correlation to estimate, and 0 / 0 would
+            // turn the whole statistic into NaN.
+            const double scale = std::sqrt(sum_var[c0][j] * sum_var[c1][j]);
+            if (!counted(c0, j) || !counted(c1, j) || !(scale > 0.0)) continue;
+            sum += sum_cross[q][j] / scale;
             ++both;
         }
         t.correlation[q] = both ? std::clamp(sum / double(both), -1.0, 1.0) : 0.0;

@@ -31,7 +31,7 @@ namespace tp {
 // The feature bits the CPU path loop is compiled for (2^5 = 32 copies): the material and
 // emission bits, which decide the per-vertex work. The light and environment bits stay
 // run-time flags on the CPU, where a well-predicted branch costs next to nothing against
-// Embree's query (BENCHMARKS.md, specialization).
+// Embree's query (BENCHMARKS.md, h200-cpu-specialization).
 constexpr uint32_t kCpuFixedFeatures = FEATURE_TEXTURES | FEATURE_PHONG_SPECULAR | FEATURE_MIRROR |
                                        FEATURE_DIELECTRIC | FEATURE_EMISSIVE_TRIANGLES;
 

@@ -6,6 +6,7 @@
 #include "render/sampler.h"
 #include "scene/features.h"
 #include "shared/math.h"
+#include "util/clock.h"
 
 #include <tbb/blocked_range.h>
 #include <tbb/combinable.h>
@@ -24,10 +25,6 @@ constexpr uint32_t kTile = 16;
 // Samples per pass aimed at ~1M, so that a pass is long against TBB's scheduling cost and short
 // against --time-limit granularity.
 constexpr uint64_t kSamplesPerPass = 1u << 20;
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 struct TileCounters {
     RayCounts rays;

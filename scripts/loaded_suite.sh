@@ -20,7 +20,7 @@
 #   --out DIR     logs, the load's build tree (removed at the end) and, unless --summary
 #                 says otherwise, the summary (default out/loaded-suite, git-ignored)
 #   --summary FILE  where the summary goes (default DIR/summary.txt); it is printed too. The
-#                 record kept in the repository: --summary benchmarks/loaded-suite/summary.txt
+#                 record kept in the repository: --summary benchmarks/loaded-suite.txt
 #
 # It configures and builds the tests first (as make test does, without installing packages),
 # then starts the load, then runs `ctest --preset P` N times. Each run's output is in

@@ -55,7 +55,8 @@ const uint ITEM_STOP = 2u; // the loop budget broke: the invocation stops
 
 // Whether `item` has a path to trace (it has a pixel, and no cut-short dispatch of this batch
 // traced it already), and its pixel and sample index. The path state stays with the caller:
-// copied through a parameter, it made the loop slower on the H200 (BENCHMARKS.md, `item-schedule`).
+// copied through a parameter, it made the loop slower on the H200 (docs/learnt.md, "Loop shapes
+// for the item schedule").
 uint item_start(uint item, out uvec3 pixel, out uint sample_index, inout RayCounts total) {
     pixel = item_pixel(item, params.camera.width, batch.row_begin, batch.row_end);
     sample_index = batch.sample_begin + pixel.z;

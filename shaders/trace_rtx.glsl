@@ -35,7 +35,7 @@ layout(set = 0, binding = BINDING_TLAS) uniform accelerationStructureEXT tlas;
 // The driver keeps what the path loop holds across a traceRayEXT in memory, so the path loop
 // (integrator.glsl) traces its shadow ray after drawing the scattered direction, when the
 // surface point and the material are dead and need not be kept (docs/gpu.md, "Shadow ray after
-// scattering"; the figure in BENCHMARKS.md).
+// scattering"; the figures in docs/learnt.md).
 const bool TRACE_SHADOW_AFTER_SCATTER = true;
 // The driver's traversal re-tests a surface less precisely than the offset bound assumes
 // (shared/offset.h): measured, 4 times the bound is enough (docs/stress.md).

@@ -10,6 +10,7 @@
 //     uniformly, weight 2 ks cos_i. So the bound is the albedo times at most 2, and the
 //     *mean* weight (the directional albedo) must stay <= kd + ks = 1 within 4 SE.
 #include "stress/common.h"
+#include "util/clock.h"
 #include "vulkan_rt/device/shader_dispatch.h"
 
 #include "shared/brdf.h"
@@ -195,7 +196,7 @@ std::vector<CaseResult> brdf_cases_cpp(const Size& s) {
     std::vector<BrdfOutput> out(in.size());
     for (size_t i = 0; i < in.size(); ++i) out[i] = eval_cpp(in[i]);
     std::vector<CaseResult> r = check(in, out, "c++", s);
-    const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double dt = seconds_since(t0);
     for (CaseResult& c : r) c.seconds = dt / double(r.size());
     return r;
 }
@@ -208,7 +209,7 @@ std::vector<CaseResult> brdf_cases_glsl(const VulkanContext& ctx, const Size& s)
         ctx, tp_spirv_stress_brdf_comp, sizeof(tp_spirv_stress_brdf_comp), {bytes_of(in)},
         {in.size() * sizeof(BrdfOutput)}, &count, sizeof(count), (count + 63) / 64);
     std::vector<CaseResult> r = check(in, as_vector<BrdfOutput>(bytes[0]), "glsl", s);
-    const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double dt = seconds_since(t0);
     for (CaseResult& c : r) {
         c.mode = ctx.info().name;
         c.seconds = dt / double(r.size());

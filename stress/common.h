@@ -5,6 +5,7 @@
 #include "stress/stress.h"
 
 #include "scene/scene.h"
+#include "util/clock.h"
 
 #include <algorithm>
 #include <chrono>
@@ -69,7 +70,7 @@ CaseResult timed(CaseResult c, F&& f) {
         c.pass = false;
         c.measured += std::string(c.measured.empty() ? "" : "; ") + "threw: " + ex.what();
     }
-    c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    c.seconds = seconds_since(t0);
     return c;
 }
 

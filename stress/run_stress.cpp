@@ -3,7 +3,9 @@
 // (--quick: the CI sizes), then stress.md and stress.json in the output directory.
 #include "stress/common.h"
 
+#include "util/clock.h"
 #include "util/error.h"
+#include "util/json_file.h"
 #include "util/output_file.h"
 #include "vulkan_rt/device/context.h"
 #include "vulkan_rt/renderer/vulkan_renderer.h"
@@ -36,8 +38,9 @@ std::string escape(std::string s) {
     return s;
 }
 
-std::string markdown(const std::vector<CaseResult>& cases, const StressOptions& o,
-                     const std::vector<std::string>& engines, double elapsed) {
+// stress.md: the run's facts, the verdict counts and a row per case and backend/mode.
+std::string stress_report(const std::vector<CaseResult>& cases, const StressOptions& o,
+                          const std::vector<std::string>& engines, double elapsed) {
     size_t pass = 0, fail = 0, skip = 0;
     uint64_t nan = 0, inf = 0;
     for (const CaseResult& c : cases) {
@@ -152,8 +155,7 @@ int run_stress(const StressOptions& o) {
         }
     }
 
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double elapsed = seconds_since(t0);
     fs::create_directories(o.out_dir);
     json j;
     j["schema"] = "twinpath-stress/1";
@@ -167,9 +169,9 @@ int run_stress(const StressOptions& o) {
         j["cases"].push_back(to_json(c));
         all_pass = all_pass && (c.pass || c.skipped);
     }
-    write_output_file((fs::path(o.out_dir) / "stress.json").string(), j.dump(2) + "\n");
+    write_json((fs::path(o.out_dir) / "stress.json").string(), j);
     write_output_file((fs::path(o.out_dir) / "stress.md").string(),
-                      markdown(cases, o, engines, elapsed));
+                      stress_report(cases, o, engines, elapsed));
     fs::remove_all(fs::path(o.out_dir) / "tmp");
     fmt::print("stress: wrote {}/stress.md and stress.json ({} cases, {})\n", o.out_dir,
                cases.size(), all_pass ? "all passed" : "some FAILED");

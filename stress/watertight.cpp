@@ -13,6 +13,7 @@
 #include "cpu_ref/ray_queries.h"
 #include "scene/generators.h"
 #include "scene/load.h"
+#include "util/clock.h"
 #include "vulkan_rt/device/vk_mode.h"
 #include "vulkan_rt/renderer/gpu_ray_queries.h"
 
@@ -242,7 +243,7 @@ std::vector<CaseResult> run_cases(const Size& s, const std::string& assets_dir,
     for (const RaySet& rs : ray_sets(s, assets_dir, out)) {
         const auto t0 = std::chrono::steady_clock::now();
         CaseResult c = verdict(rs, trace(rs), backend, mode);
-        c.seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        c.seconds = seconds_since(t0);
         out.push_back(c);
     }
     for (CaseResult& c : out)

@@ -1,11 +1,12 @@
 #include "view/cpu_jobs.h"
 
-#include "compare/compare.h"
 #include "compare/pathdiff.h"
-#include "compare/rgb_image.h"
 #include "compare/significance_map.h"
 #include "cpu_ref/cpu_renderer.h"
 #include "render/render_header.h"
+#include "verify/render_engines.h"
+#include "verify/summary.h"
+#include "verify/verify.h"
 
 #include <fmt/core.h>
 
@@ -14,10 +15,6 @@
 
 namespace tp {
 namespace {
-
-// The live compare's CPU seed: any other seed gives independent random numbers
-// (shared/rng.h hashes the seed with pixel, sample and dimension).
-constexpr uint32_t kIndependentSeed = 0x9e3779b9u;
 
 std::vector<std::string> split_lines(const std::string& text) {
     std::vector<std::string> lines;
@@ -39,33 +36,52 @@ std::optional<CpuJobOutcome> CpuJob::poll() {
     }
 }
 
-std::unique_ptr<CpuJob> CpuJob::live_compare(FlatScene scene, RenderResult gpu, uint32_t seed,
-                                             uint32_t sampler, uint32_t threads) {
+std::string CpuJob::activity() const {
+    const std::lock_guard<std::mutex> lock(activity_mutex_);
+    return activity_;
+}
+
+std::unique_ptr<CpuJob> CpuJob::live_compare(FlatScene scene, std::shared_ptr<WindowEngine> window,
+                                             uint32_t seed, uint32_t sampler, uint32_t threads,
+                                             PlanRequest plan, std::atomic<bool>* stop) {
     auto job = std::make_unique<CpuJob>();
-    std::atomic<double>* progress = &job->progress_;
-    job->result_ = std::async(
-        std::launch::async, [=, scene = std::move(scene), gpu = std::move(gpu)]() mutable {
-            scene.spp = std::max(1u, gpu.stats.spp);
-            RenderOptions opt;
-            opt.seed = seed ^ kIndependentSeed;
-            opt.sampler = sampler;
-            opt.threads = threads;
-            opt.progress = [progress](double f) { progress->store(f); };
-            RenderResult cpu = render_cpu(scene, opt);
-            RenderOptions gpu_opt;
-            gpu_opt.sampler = sampler;
-            const RgbImage a = rgb_image_from_exr(render_exr(gpu, scene, gpu_opt), "window");
-            const RgbImage b = rgb_image_from_exr(render_exr(cpu, scene, opt), "CPU reference");
-            const CompareResult r = compare_images(a, b, CompareOptions{});
-            CpuJobOutcome out;
-            out.lines.push_back(fmt::format("compare, {} spp each: {} (p = {:.3g}, alpha {})",
-                                            scene.spp, r.different ? "DIFFERENT" : "consistent",
-                                            r.p_value, r.alpha));
-            out.lines.push_back(fmt::format("significant pixels: {} of {}; Esc leaves the map",
-                                            r.local.significant_pixels, a.pixels()));
-            out.picture_rgb = significance_map(r);
-            return out;
-        });
+    CpuJob* self = job.get();
+    job->result_ = std::async(std::launch::async, [=, scene = std::move(scene)]() {
+        EngineSetup setup;
+        setup.scene = &scene;
+        setup.scene_path = scene.name;
+        setup.sampler = sampler;
+        setup.threads = threads;
+        CpuEngine cpu(setup);
+        VerifyOptions o;
+        o.plan = plan;
+        o.seed = seed;
+        o.triage = false;
+        o.stop = stop;
+        VerifyObserver observer;
+        observer.progress = [self](const std::string& phase, const std::vector<double>& f) {
+            const std::lock_guard<std::mutex> lock(self->activity_mutex_);
+            self->activity_ = fmt::format("verify, {}: window {:.0f}%, CPU reference {:.0f}%",
+                                          phase, 100.0 * f[0], 100.0 * f[1]);
+        };
+        // The window first: compare's A, so that the map is red where the window is brighter.
+        const VerifyResult v = verify({window.get(), &cpu}, o, observer);
+        const PairVerdict& pv = v.verdicts.front();
+        CpuJobOutcome out;
+        out.lines.push_back(
+            fmt::format("compare, window {} spp against CPU {} spp: {} (p = {:.3g}, "
+                        "alpha {})",
+                        v.rgb[0].spp.value_or(0), v.rgb[1].spp.value_or(0),
+                        pv.compare.different ? "DIFFERENT" : "consistent", pv.compare.p_value,
+                        pv.compare.alpha));
+        out.lines.push_back(fmt::format("a uniform bias of {} is found with probability {:.2g} at "
+                                        "these spp; significant pixels: {} of {}; Esc leaves the "
+                                        "map",
+                                        percent(pv.detectable), v.request.power,
+                                        pv.compare.local.significant_pixels, v.rgb[0].pixels()));
+        out.picture_rgb = significance_map(pv.compare);
+        return out;
+    });
     return job;
 }
 

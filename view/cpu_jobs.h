@@ -6,11 +6,14 @@
 
 #include "render/render_options.h"
 #include "scene/flatten.h"
+#include "verify/plan.h"
+#include "view/window_engine.h"
 #include "vulkan_rt/renderer/vulkan_renderer.h"
 
 #include <atomic>
 #include <future>
 #include <memory>
+#include <mutex>
 #include <optional>
 #include <string>
 #include <vector>
@@ -24,12 +27,15 @@ struct CpuJobOutcome {
 
 class CpuJob {
   public:
-    // Renders `scene` (the window's camera in its params) on the CPU with as many samples as
-    // `gpu` has and the same sampler (SAMPLER_*), with a different seed so that the two
-    // estimates are independent (the two-sample test's assumption, docs/compare.md), compares,
-    // and writes nothing.
-    static std::unique_ptr<CpuJob> live_compare(FlatScene scene, RenderResult gpu, uint32_t seed,
-                                                uint32_t sampler, uint32_t threads);
+    // `twinpath verify` of the window's view without its triage (verify/verify.h): the window's
+    // accumulation (`window`, which the frame loop serves) against the CPU reference rendering
+    // `scene` (the window's camera in its params) with the same sampler (SAMPLER_*) and seeds of
+    // its own. verify plans the CPU's samples and how far the window accumulates, the two render
+    // at once, and compare decides; writes nothing. Setting `stop` ends it (a camera move).
+    static std::unique_ptr<CpuJob> live_compare(FlatScene scene,
+                                                std::shared_ptr<WindowEngine> window, uint32_t seed,
+                                                uint32_t sampler, uint32_t threads,
+                                                PlanRequest plan, std::atomic<bool>* stop);
     // Renders pixel (x, y) sample 0 with path logs on both engines (the GPU through
     // render_vulkan on `vk`, a device of its own), writes them to `log_prefix`_gpu.json and
     // _cpu.json and runs pathdiff on them.
@@ -37,12 +43,14 @@ class CpuJob {
                                             uint32_t sampler, uint32_t threads, VulkanOptions vk,
                                             std::string scene_path, std::string log_prefix);
 
-    double progress() const { return progress_.load(); }
+    // What the job is doing, for the overlay while it runs ("CPU reference: pilots 40%").
+    std::string activity() const;
     // The outcome once the job has finished (errors become its lines), else nothing.
     std::optional<CpuJobOutcome> poll();
 
   private:
-    std::atomic<double> progress_{0.0};
+    mutable std::mutex activity_mutex_;
+    std::string activity_;
     std::future<CpuJobOutcome> result_;
 };
 

@@ -5,18 +5,21 @@
 #include "render/sampler.h"
 #include "scene/features.h"
 #include "shaders/display_interface.h"
+#include "util/clock.h"
 #include "util/error.h"
 #include "view/cpu_jobs.h"
 #include "view/overlay.h"
 #include "view/view_camera.h"
 #include "view/view_input.h"
 #include "view/window.h"
+#include "view/window_engine.h"
 #include "vulkan_rt/present/presenter.h"
 
 #include <fmt/core.h>
 #include <glm/gtc/constants.hpp>
 
 #include <algorithm>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <filesystem>
@@ -26,10 +29,6 @@
 
 namespace tp {
 namespace {
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 // Mouse and key steps: a drag of one window height turns the camera by 2 radians; a wheel
 // notch dollies by 10% and, with the modifier, changes the field of view by 2 degrees; a fly
@@ -98,6 +97,11 @@ class Viewer {
                 if (s.frame == frame) actions.push_back(s.action);
             for (const ViewAction& a : actions) apply(a);
             if (restart_) {
+                if (window_engine_) {
+                    compare_stop_.store(true);
+                    window_engine_->abandon("the view moved: the live compare was for the view "
+                                            "before (press C again)");
+                }
                 renderer_.restart(camera_.camera(scene_.origin, width_, height_));
                 restart_ = false;
                 ++view_id_;
@@ -109,6 +113,7 @@ class Viewer {
             const bool rendered = renderer_.frame();
             renderer_.update_display(bgra_, 0.0f);
             const bool last = o_.frames > 0 && frame + 1 == o_.frames;
+            if (window_engine_) window_engine_->serve(renderer_, rendered && !last);
             if (presenter) {
                 text_.spp = renderer_.spp();
                 overlay->build(text_, show_overlay_);
@@ -136,6 +141,8 @@ class Viewer {
         }
         // What the jobs were asked for is reported (and written) before the view exits.
         while (compare_job_ || pathdiff_job_) {
+            // The window accumulates no more: the live compare takes what it has.
+            if (window_engine_) window_engine_->serve(renderer_, false);
             std::this_thread::sleep_for(std::chrono::milliseconds(20));
             poll_jobs();
         }
@@ -250,9 +257,13 @@ class Viewer {
             return status({fmt::format("C compares from {} spp on; the window has {}",
                                        kMinCompareSpp, renderer_.spp())});
         compare_view_id_ = view_id_;
+        compare_stop_.store(false);
+        window_engine_ =
+            std::make_shared<WindowEngine>(current_scene(), o_.progressive.seed,
+                                           o_.progressive.sampler, vk_mode_name(renderer_.mode()));
         compare_job_ =
-            CpuJob::live_compare(current_scene(), renderer_.result(), o_.progressive.seed,
-                                 o_.progressive.sampler, o_.threads);
+            CpuJob::live_compare(current_scene(), window_engine_, o_.progressive.seed,
+                                 o_.progressive.sampler, o_.threads, o_.verify, &compare_stop_);
     }
 
     void start_pathdiff(double x, double y) {
@@ -272,13 +283,13 @@ class Viewer {
         if (compare_job_) {
             if (std::optional<CpuJobOutcome> out = compare_job_->poll()) {
                 compare_job_.reset();
+                window_engine_.reset();
                 // The map belongs to the view it was made for.
                 if (!out->picture_rgb.empty() && compare_view_id_ == view_id_)
                     show_picture(out->picture_rgb);
                 status(out->lines);
             } else {
-                text_.status = {
-                    fmt::format("CPU reference: {:.0f}%", 100.0 * compare_job_->progress())};
+                text_.status = {compare_job_->activity()};
             }
         }
         if (pathdiff_job_) {
@@ -313,6 +324,9 @@ class Viewer {
     bool restart_ = false, show_overlay_ = true;
     std::unique_ptr<Buffer> picture_;
     std::unique_ptr<CpuJob> compare_job_, pathdiff_job_;
+    // The live compare's side of the window (served every frame) and its stop (a camera move).
+    std::shared_ptr<WindowEngine> window_engine_;
+    std::atomic<bool> compare_stop_{false};
     uint64_t view_id_ = 0, compare_view_id_ = 0; // restarts so far; at the compare's start
 };
 

@@ -7,6 +7,7 @@
 #pragma once
 
 #include "scene/flatten.h"
+#include "verify/plan.h"
 #include "vulkan_rt/device/vk_mode.h"
 #include "vulkan_rt/present/progressive_renderer.h"
 
@@ -25,6 +26,7 @@ struct ViewOptions {
     std::string script;             // --script: timed actions (view_input.h)
     bool headless = false;          // --headless: no window, frame times on stdout
     uint32_t threads = 0;           // CPU threads of the live compare and the path replay
+    PlanRequest verify;             // C: --detect and --time-budget (verify/plan.h)
 };
 
 // Returns the exit code; throws InputError (2) and RuntimeError (3, also for no display).

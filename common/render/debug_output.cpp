@@ -208,8 +208,7 @@ const char* integrator_name(uint32_t integrator) {
     }
 }
 
-void write_path_log(const std::string& path, const PathLogInfo& info,
-                    const std::vector<PathVertex>& records) {
+json path_log_json(const PathLogInfo& info, const std::vector<PathVertex>& records) {
     json j;
     j["format"] = "twinpath path log";
     j["version"] = 2; // 2: positions relative to "origin"
@@ -239,7 +238,12 @@ void write_path_log(const std::string& path, const PathLogInfo& info,
         paths.push_back({{"sample", s}, {"radiance", vec(L)}, {"vertices", std::move(vertices)}});
     }
     j["paths"] = std::move(paths);
-    write_output_file(path, j.dump(1) + "\n");
+    return j;
+}
+
+void write_path_log(const std::string& path, const PathLogInfo& info,
+                    const std::vector<PathVertex>& records) {
+    write_output_file(path, path_log_json(info, records).dump(1) + "\n");
 }
 
 void add_aov_layers(ExrImage& img, const std::vector<PixelAov>& aovs) {

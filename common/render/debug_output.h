@@ -7,6 +7,7 @@
 #include "shared/path_log.h"
 
 #include <glm/vec3.hpp>
+#include <nlohmann/json_fwd.hpp>
 #include <optional>
 #include <string>
 #include <vector>
@@ -59,7 +60,8 @@ struct PathLogInfo {
     glm::dvec3 origin{0.0};
 };
 
-// The path log as JSON (docs/debugging.md, "Path log format").
+// The path log as JSON (docs/debugging.md, "Path log format"), and written to a file.
+nlohmann::json path_log_json(const PathLogInfo& info, const std::vector<PathVertex>& records);
 void write_path_log(const std::string& path, const PathLogInfo& info,
                     const std::vector<PathVertex>& records);
 

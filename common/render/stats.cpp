@@ -1,7 +1,7 @@
 #include "render/stats.h"
 
 #include "util/error.h"
-#include "util/output_file.h"
+#include "util/json_file.h"
 
 #include <nlohmann/json.hpp>
 
@@ -42,10 +42,6 @@ nlohmann::json ranges_json(const std::vector<SampleRange>& ranges) {
     for (const SampleRange& r : ranges)
         j.push_back({{"seed", r.seed}, {"begin", r.begin}, {"end", r.end}});
     return j;
-}
-
-void write_json(const std::string& path, const nlohmann::json& j) {
-    write_output_file(path, j.dump(2) + "\n");
 }
 
 } // namespace

@@ -50,6 +50,17 @@ std::string SceneFeatures::summary() const {
     return s.empty() ? "none" : s;
 }
 
+bool SceneFeatures::emits() const {
+    return has(FEATURE_EMISSIVE_TRIANGLES | FEATURE_POINT_LIGHTS | FEATURE_DIRECTIONAL_LIGHTS |
+               FEATURE_ENV_CONSTANT | FEATURE_ENV_MAP);
+}
+
+std::optional<std::string> dark_scene_warning(const FlatScene& scene, const std::string& where) {
+    if (analyze_features(scene).emits()) return std::nullopt;
+    return where + ": nothing in the scene emits light (no light with power, no emissive material "
+                   "on an object, no environment): every render of it is black";
+}
+
 SceneFeatures analyze_features(const FlatScene& scene) {
     SceneFeatures f;
     for (uint32_t uses : instances_per_mesh(scene))

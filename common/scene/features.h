@@ -6,6 +6,7 @@
 #include "scene/flatten.h"
 #include "shared/features.h"
 
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -19,7 +20,13 @@ struct SceneFeatures {
     std::vector<std::string> names() const;
     // The names joined by ", ", or "none".
     std::string summary() const;
+    // Whether anything emits light: an emissive material on an object, a light, an environment.
+    bool emits() const;
 };
+
+// For a scene in which nothing emits: a warning that every render of it is black (and two
+// engines agree on it whatever their bugs); nullopt otherwise. `where` names the scene.
+std::optional<std::string> dark_scene_warning(const FlatScene& scene, const std::string& where);
 
 // What `scene` uses. Only materials that an instance refers to count; a light or environment
 // that flatten() dropped (no power) does not.

@@ -38,4 +38,12 @@ std::string scene_hash(const FlatScene& scene) {
     return fmt::format("{:016x}", h.get());
 }
 
+uint64_t render_inputs_hash(const FlatScene& s) {
+    Fnv1a h;
+    h.value(s.params);
+    h.value(s.spp);
+    add_scene_content(h, s);
+    return h.get();
+}
+
 } // namespace tp

@@ -1,5 +1,7 @@
 #include "util/progress_bar.h"
 
+#include "util/clock.h"
+
 #include <fmt/core.h>
 
 #include <algorithm>
@@ -16,15 +18,19 @@ ProgressBar::~ProgressBar() {
 }
 
 void ProgressBar::update(double fraction) {
+    update(fraction, "");
+}
+
+void ProgressBar::update(double fraction, const std::string& note) {
     if (!enabled_) return;
     fraction = std::clamp(fraction, 0.0, 1.0);
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - start_).count();
+    const double elapsed = seconds_since(start_);
     const int width = 30, filled = int(fraction * width + 0.5);
     const std::string eta =
         fraction > 0 ? fmt::format("{:.0f}s left", elapsed * (1 - fraction) / fraction) : "";
-    fmt::print(stderr, "\r{} [{}{}] {:3.0f}% {:.1f}s {}   ", label_, std::string(filled, '#'),
-               std::string(width - filled, '.'), 100 * fraction, elapsed, eta);
+    fmt::print(stderr, "\r{} [{}{}] {:3.0f}% {:.1f}s {}{}   ", label_, std::string(filled, '#'),
+               std::string(width - filled, '.'), 100 * fraction, elapsed, eta,
+               note.empty() ? "" : " (" + note + ")");
     std::fflush(stderr);
     drawn_ = true;
 }

@@ -12,6 +12,8 @@ class ProgressBar {
     explicit ProgressBar(std::string label);
     ~ProgressBar(); // ends the line if anything was drawn
     void update(double fraction);
+    // The same with a note after the bar (each engine's share, when several render at once).
+    void update(double fraction, const std::string& note);
     // The callback form RenderOptions::progress takes; empty when stderr is not a terminal.
     std::function<void(double)> callback();
 

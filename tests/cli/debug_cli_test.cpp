@@ -3,6 +3,7 @@
 // of --debug-pixel/--debug-log/--aov, the AOV layers and the CPU's debug views.
 #include "image/exr_io.h"
 #include "support/test_paths.h"
+#include "util/json_file.h"
 
 #include <catch2/catch.hpp>
 #include <fmt/format.h>
@@ -12,10 +13,6 @@
 
 namespace tp::test {
 namespace {
-
-void write_json(const std::string& path, const nlohmann::json& j) {
-    std::ofstream(path) << j.dump(1);
-}
 
 std::string log_of(const std::string& dir, const std::string& name, const std::string& pixel) {
     const std::string path = dir + "/" + name + ".json";

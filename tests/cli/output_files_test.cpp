@@ -155,6 +155,18 @@ TEST_CASE("two outputs naming one file and empty output paths are usage errors",
     fs::remove_all(dir);
 }
 
+// /proc's directory passes every permission check for root, but its file system creates no
+// files: the check creates the output's PATH.partial once, so this is a usage error before the
+// render (exit 2), not a failed write after it (exit 3).
+TEST_CASE("an output in a directory that takes no new files is a usage error before any work",
+          "[cli][output]") {
+    const auto r = run(render("-o /proc/twinpath-test.exr"));
+    INFO(r.out);
+    CHECK(r.exit_code == 2);
+    CHECK(r.out.find("cannot create a file in /proc") != std::string::npos);
+    CHECK(r.out.find("twinpath: rendering") == std::string::npos);
+}
+
 TEST_CASE("NaN option values are usage errors", "[cli][output]") {
     const fs::path dir = tp::test::temp_dir("option-nan");
     const fs::path a = dir / "a.exr";

@@ -167,3 +167,34 @@ TEST_CASE("usage errors exit with 2 and --help with 0", "[cli]") {
     CHECK(run(bin() + " render furnace --bogus").exit_code == 2);
     CHECK(run(bin() + " render furnace --backend opengl").exit_code == 2);
 }
+
+TEST_CASE("a scene without light: render warns, and the black file against itself is consistent "
+          "with a warning that it shares its samples",
+          "[cli]") {
+    // The furnace without its emission: nothing emits, every pixel is 0 with variance 0.
+    const fs::path dir = tp::test::temp_dir("cli-dark");
+    const std::string scene = (dir / "dark.json").string();
+    std::ifstream in(tp::test::scenes_dir() + "/furnace.json");
+    nlohmann::json j = nlohmann::json::parse(in);
+    j["materials"]["wall"].erase("Ke");
+    std::ofstream(scene) << j.dump(2);
+    const std::string exr = shell_quote((dir / "x.exr").string());
+    const auto r =
+        run(bin() + " render " + shell_quote(scene) + " --spp 4 --width 16 --height 16 -o " + exr);
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    CHECK(r.out.find("warning: " + scene + ": nothing in the scene emits light") !=
+          std::string::npos);
+
+    const auto c = run(bin() + " compare " + exr + " " + exr);
+    INFO(c.out);
+    CHECK(c.exit_code == 0);
+    CHECK(c.out.find("consistent: p = 1 ") != std::string::npos);
+    CHECK(c.out.find("share samples 0 to 3 of seed 0 (sobol sampler)") != std::string::npos);
+    CHECK(c.out.find("\"consistent\" proves nothing") != std::string::npos);
+
+    // A scene that emits draws no such warning.
+    const auto lit = run(bin() + " render furnace --spp 1 --width 4 --height 4 -o " + exr);
+    CHECK(lit.out.find("emits") == std::string::npos);
+    fs::remove_all(dir);
+}

@@ -12,6 +12,13 @@ CountInterval binomial_interval99(size_t n, double p) {
             size_t(boost::math::quantile(boost::math::complement(b, 0.005)))};
 }
 
+size_t binomial_lower_bound(size_t n, double p, double tail) {
+    const boost::math::binomial_distribution<double> b(double(n), p);
+    size_t k = 0;
+    while (k < n && boost::math::cdf(b, double(k)) <= tail) ++k;
+    return k;
+}
+
 std::string describe_rate(const std::string& name, size_t k, size_t n, double alpha) {
     const CountInterval ci = binomial_interval99(n, alpha);
     return fmt::format("{}: {} of {} rejected at alpha {} (rate {:.4f}; 99% interval [{}, {}])",

@@ -15,6 +15,10 @@ struct CountInterval {
 // Central 99% interval of Binomial(n, p): 0.5% in each tail, rounded outwards (Boost.Math).
 CountInterval binomial_interval99(size_t n, double p);
 
+// The fewest successes a test of success probability p shows in n trials with probability
+// 1 - tail: the largest k with P(X < k) <= tail for X ~ Binomial(n, p) (Boost.Math).
+size_t binomial_lower_bound(size_t n, double p, double tail);
+
 // "name: k of n rejected at alpha (99% interval [lo, hi])", for Catch2's INFO.
 std::string describe_rate(const std::string& name, size_t k, size_t n, double alpha);
 

@@ -7,6 +7,7 @@
 
 #include "compare/compare.h"
 #include "compare/distributions.h"
+#include "compare/power.h"
 #include "shared/rng.h"
 #include "support/test_paths.h"
 
@@ -64,6 +65,58 @@ TEST_CASE("power of the global test follows the noncentral chi-square", "[compar
                    << " of " << n << ", 99% interval [" << ci.lo << ", " << ci.hi << "]");
     CHECK(detected >= ci.lo);
     CHECK(detected <= ci.hi);
+}
+
+TEST_CASE("the power model of verify predicts the global test's power, with independent and "
+          "with identical channels",
+          "[compare][power]") {
+    // The same uniform +1.5% as above: compare/power.h from the true means and per-sample
+    // variances (their average over the two images, 0.25 mu^2 ((1 + b)^2 + 1) / 2) against the
+    // rejections observed. Identical channels (one Y for R, G, B: the same path) make the
+    // channels' correlation 1, the null 3 chi2_K instead of chi2_3K, and the power lower: that
+    // case checks the model's use of R. The noncentral chi-square of the case above is the exact
+    // answer for independent channels; the model's two-moment fit must be within 0.02 of it.
+    const double b = 0.015, level = 0.025;
+    for (const bool identical : {false, true}) {
+        SyntheticSpec spec;
+        spec.correlated_channels = identical;
+        Planes mean, var;
+        for (size_t c = 0; c < 3; ++c)
+            for (int y = 0; y < spec.height; ++y)
+                for (int x = 0; x < spec.width; ++x) {
+                    const double mu = true_mean(spec, int(c), x, y);
+                    mean[c].push_back(mu);
+                    var[c].push_back(0.25 * mu * mu * ((1 + b) * (1 + b) + 1) / 2);
+                }
+        const double r = identical ? 1.0 : 0.0;
+        const PowerModel model = power_model(spec.width, spec.height, mean, var, {r, r, r}, 8);
+        const double n_eff = effective_spp(spec.spp, spec.spp);
+        const double predicted = global_test_power(model, b, n_eff, level);
+        if (!identical) {
+            const double lambda = b * b * n_eff * model.signal, k = model.null_mean;
+            const double crit = chi2_upper_quantile(level, k);
+            const double exact = boost::math::cdf(
+                boost::math::complement(boost::math::non_central_chi_squared(k, lambda), crit));
+            CHECK(predicted == Approx(exact).margin(0.02));
+        }
+        const size_t n = 200;
+        size_t detected = 0;
+        Bias bias;
+        bias.scale = 1 + b;
+        bias.x1 = spec.width;
+        bias.y1 = spec.height;
+        for (size_t i = 0; i < n; ++i) {
+            const CompareResult res = compare_images(synthetic_render(spec, 9000 + 2 * i, bias),
+                                                     synthetic_render(spec, 9001 + 2 * i), {});
+            detected += res.global.p_value <= level;
+        }
+        const CountInterval ci = binomial_interval99(n, predicted);
+        INFO((identical ? "identical" : "independent")
+             << " channels: model power " << predicted << ", detected " << detected << " of " << n
+             << ", 99% interval [" << ci.lo << ", " << ci.hi << "]");
+        CHECK(detected >= ci.lo);
+        CHECK(detected <= ci.hi);
+    }
 }
 
 TEST_CASE("power: a 1% change of the white albedo in cornell, 64x64 at 256 spp",

@@ -114,6 +114,34 @@ TEST_CASE("zero-variance pixels: equal is consistent, float rounding is tolerate
     CHECK(off.local.holm.count == 3 * 16 * 16);
 }
 
+TEST_CASE("zero variance never makes a difference: black, constant and partly black images "
+          "against themselves",
+          "[compare][units]") {
+    // A scene with nothing that emits renders black on both engines: every pixel-channel 0 with
+    // variance 0, so neither the noise nor the floor gives a scale (the tile test's channel
+    // correlation was 0 / 0). A file against itself is consistent whatever it holds.
+    CompareOptions opt;
+    for (const double level : {0.0, 0.5}) {
+        const RgbImage img = flat_image(32, 32, level, 0.0, 64);
+        const CompareResult r = compare_images(img, img, opt);
+        INFO("level " << level << ", p " << r.p_value << ", global p " << r.global.p_value);
+        CHECK_FALSE(r.different);
+        CHECK(r.p_value == 1.0);
+        CHECK(r.global.p_value == 1.0);
+        CHECK(std::isfinite(r.global.scale));
+    }
+    // Noise in the right half, black (no variance, no floor in the blue channel) in the left.
+    RgbImage part = flat_image(32, 32, 0.5, 0.01, 64);
+    for (size_t i = 0; i < part.pixels(); ++i)
+        if (i % 32 < 16)
+            for (size_t c = 0; c < 3; ++c) part.mean[c][i] = part.var[c][i] = 0.0;
+    for (size_t i = 0; i < part.pixels(); ++i) part.mean[2][i] = part.var[2][i] = 0.0;
+    const CompareResult r = compare_images(part, part, opt);
+    CHECK_FALSE(r.different);
+    CHECK(r.p_value == 1.0);
+    CHECK(std::isfinite(r.global.scale));
+}
+
 TEST_CASE("tiles without estimated variance stay in the statistic but not in the dof",
           "[compare][units]") {
     // 4x4, tiles of 2x2: the left two tiles are constant (an emitter), the right two noisy

@@ -5,6 +5,7 @@
 // parsers find interesting). A crash leaves the input that caused it in crash-<n> in the working
 // directory and ends the process by the same signal; the test then fails.
 #include "scene_loader_fuzz.h"
+#include "util/clock.h"
 
 #include <fcntl.h>
 #include <unistd.h>
@@ -179,7 +180,7 @@ int main(int argc, char** argv) {
         LLVMFuzzerTestOneInput(g_current.data(), g_current.size());
         ++runs;
     }
-    while (std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() < seconds) {
+    while (tp::seconds_since(t0) < seconds) {
         g_current = mutate(corpus, rng);
         LLVMFuzzerTestOneInput(g_current.data(), g_current.size());
         ++runs;

@@ -52,3 +52,16 @@ foreach(shader render_compute.comp render_pipeline.rgen)
   set_tests_properties(spirv_val_${shader}_debug PROPERTIES LABELS gpu
                        SKIP_REGULAR_EXPRESSION "spirv-val not found")
 endforeach()
+
+# twinpath verify (docs/debugging.md, "verify"): the same planted bugs, found and named by one
+# command with its defaults; the unmodified shader consistent; the report's commands.
+twinpath_gpu_test(gpu_verify_test SOURCES verify_cli_test.cpp LIBS nlohmann_json::nlohmann_json)
+add_dependencies(gpu_verify_test gpu_bug_shaders)
+target_compile_definitions(gpu_verify_test PRIVATE TP_BUG_SPIRV_DIR="${BUG_SPIRV_DIR}")
+
+# docs/debugging.md's worked example is the output of scripts/debugging_example.sh on lavapipe:
+# the doc must match a run of the commands it shows.
+add_test(NAME debugging_example_up_to_date
+  COMMAND ${PROJECT_SOURCE_DIR}/scripts/debugging_example.sh --check $<TARGET_FILE:twinpath>
+          ${BUG_SPIRV_DIR})
+set_tests_properties(debugging_example_up_to_date PROPERTIES LABELS gpu)

@@ -138,8 +138,8 @@ TEST_CASE("planted shader bugs: compare rejects the image and pathdiff names ver
         {"LIGHT_PDF", "cornell", 16, 24, 0, {"light_pdf"}},
         // Swapped barycentrics move the shading point within its triangle. On cornell's flat
         // untextured triangles that only shifts what the point sees: compare's p was 0.007
-        // against alpha = 0.01, and 0.93 with another random-number layout
-        // (benchmarks/h200-rng-blocks), a pass by luck. On spheres' textured floor they move
+        // against alpha = 0.01, and 0.93 with another random-number layout (docs/learnt.md,
+        // "Four random numbers per hash"), a pass by luck. On spheres' textured floor they move
         // the texture and on the spheres the interpolated normal: p ~ 1e-70 with either layout.
         {"SWAP_BARY", "spheres", 16, 30, 0, {"bary"}},
         // A larger reflectance: either the pdf of the chosen lobe (F) or the lobe itself.

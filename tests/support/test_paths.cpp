@@ -14,6 +14,9 @@ namespace tp::test {
 std::string twinpath_bin() {
     return TWINPATH_TEST_BIN;
 }
+std::string lab_bin() {
+    return TWINPATH_TEST_LAB_BIN;
+}
 std::string scenes_dir() {
     return TWINPATH_TEST_SCENES;
 }
@@ -57,6 +60,10 @@ ProcessResult run(const std::string& command) {
 
 std::string twinpath(const std::string& args) {
     return shell_quote(twinpath_bin()) + " " + args;
+}
+
+std::string twinpath_lab(const std::string& args) {
+    return shell_quote(lab_bin()) + " " + args;
 }
 
 nlohmann::json read_json(const std::string& path) {

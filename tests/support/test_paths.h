@@ -10,6 +10,7 @@
 namespace tp::test {
 
 std::string twinpath_bin();
+std::string lab_bin(); // twinpath-lab (tools/lab)
 std::string scenes_dir();
 std::string assets_dir(); // ../shared/assets; may be absent (asset tests then skip loudly)
 std::string source_dir();
@@ -31,6 +32,9 @@ std::string shell_quote(const std::string& s);
 
 // The command line that runs the twinpath binary with `args` (already quoted as needed).
 std::string twinpath(const std::string& args);
+
+// The same for twinpath-lab.
+std::string twinpath_lab(const std::string& args);
 
 // A JSON file (stats, compare results, path logs); throws when it is missing or malformed.
 nlohmann::json read_json(const std::string& path);

@@ -1,6 +1,7 @@
 #include "vulkan_rt/compute_mode/compute_renderer.h"
 
 #include "scene/features.h"
+#include "util/clock.h"
 #include "vulkan_rt/compute_mode/bvh_buffers.h"
 #include "vulkan_rt/compute_mode/bvh_builder.h"
 #include "vulkan_rt/device/compute_program.h"
@@ -100,10 +101,6 @@ class ComputeTracer : public Tracer {
     ComputeProgram program_;
     std::unique_ptr<ComputeProgram> debug_program_;
 };
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 } // namespace
 

@@ -1,5 +1,7 @@
 #include "vulkan_rt/device/compute_program.h"
 
+#include "util/clock.h"
+#include "util/fnv1a.h"
 #include "vulkan_rt/device/pipeline_report.h"
 #include "vulkan_rt/device/specialization.h"
 #include "vulkan_rt/device/vk_error.h"
@@ -44,8 +46,7 @@ ComputeProgram::ComputeProgram(const VulkanContext& ctx, const uint32_t* spirv, 
     vkDestroyShaderModule(device_, module, nullptr);
     vk_check(r, "compiling a compute pipeline");
     if (cache) {
-        cache->use().create_s =
-            std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+        cache->use().create_s = seconds_since(t0);
         cache->save();
         cache_use_ = cache->use();
     }

@@ -1,10 +1,11 @@
 #include "vulkan_rt/device/pipeline_cache.h"
 
+#include "util/cache_dir.h"
+#include "util/fnv1a.h"
 #include "vulkan_rt/device/vk_error.h"
 
 #include <fmt/core.h>
 
-#include <cstdlib>
 #include <cstring>
 #include <filesystem>
 #include <fstream>
@@ -44,15 +45,6 @@ std::vector<uint8_t> read_file(const std::string& path, bool& exists) {
 
 } // namespace
 
-uint64_t fnv1a64(const void* data, size_t bytes, uint64_t h) {
-    const auto* p = static_cast<const uint8_t*>(data);
-    for (size_t i = 0; i < bytes; ++i) {
-        h ^= p[i];
-        h *= 0x100000001b3ull;
-    }
-    return h;
-}
-
 uint64_t PipelineCacheKey::hash() const {
     uint64_t h = fnv1a64(&vendor_id, sizeof(vendor_id));
     h = fnv1a64(&device_id, sizeof(device_id), h);
@@ -62,17 +54,8 @@ uint64_t PipelineCacheKey::hash() const {
 }
 
 std::string pipeline_cache_dir() {
-    const auto env = [](const char* name) -> std::string {
-        const char* v = std::getenv(name);
-        return v && *v ? v : "";
-    };
-    if (!env("TWINPATH_CACHE").empty())
-        return (fs::path(env("TWINPATH_CACHE")) / "pipelines").string();
-    if (!env("XDG_CACHE_HOME").empty())
-        return (fs::path(env("XDG_CACHE_HOME")) / "twinpath" / "pipelines").string();
-    if (!env("HOME").empty())
-        return (fs::path(env("HOME")) / ".cache" / "twinpath" / "pipelines").string();
-    return "";
+    const std::string root = cache_dir();
+    return root.empty() ? "" : (fs::path(root) / "pipelines").string();
 }
 
 std::vector<uint8_t> encode_pipeline_cache(const PipelineCacheKey& key,

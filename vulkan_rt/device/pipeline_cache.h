@@ -3,8 +3,8 @@
 // module set, so that the second render of a scene (or of another scene with the same features)
 // skips the driver's compilation of the specialized pipeline.
 //
-// Where: $TWINPATH_CACHE/pipelines, else $XDG_CACHE_HOME/twinpath/pipelines, else
-// ~/.cache/twinpath/pipelines (the directory of the bench references). File name: a hash of the
+// Where: pipelines/ in the cache directory (util/cache_dir.h, shared with the bench references);
+// none without a cache directory. File name: a hash of the
 // key below. The file is our header (magic, format version, the key, the data's size and hash)
 // followed by the driver's vkGetPipelineCacheData bytes. The key is the shaders' hash (FNV-1a of
 // the SPIR-V words) and the driver: vendorID, deviceID, driverVersion and pipelineCacheUUID.
@@ -33,10 +33,7 @@ struct PipelineCacheKey {
     uint64_t hash() const;
 };
 
-// FNV-1a, 64 bits, continuing from `h`.
-uint64_t fnv1a64(const void* data, size_t bytes, uint64_t h = 0xcbf29ce484222325ull);
-
-// The cache directory (see above); "" when none of the variables is set.
+// The cache directory (see above); "" when there is none.
 std::string pipeline_cache_dir();
 
 // The file bytes for `data` under `key`, and back: decode returns false with a reason for

@@ -1,6 +1,7 @@
 #include "vulkan_rt/pipeline_mode/pipeline_renderer.h"
 
 #include "scene/features.h"
+#include "util/clock.h"
 #include "util/error.h"
 #include "vulkan_rt/pipeline_mode/accel_structures.h"
 #include "vulkan_rt/pipeline_mode/rt_functions.h"
@@ -89,8 +90,7 @@ ModeSetup prepare_pipeline(const VulkanContext& ctx, const FlatScene& scene,
         upload_scene(ctx, scene, seeded_params(scene, options), {}, kAccelInputUsage, features);
     const auto t_build = std::chrono::steady_clock::now();
     auto as = std::make_unique<AccelStructures>(ctx, *rt, scene, m.buffers);
-    m.accel.build_time_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t_build).count();
+    m.accel.build_time_s = seconds_since(t_build);
     m.accel.bytes = as->bytes();
     m.accel.extra["blas_count"] = std::to_string(as->blas_count());
     m.accel.extra["blas_bytes_uncompacted"] = std::to_string(as->uncompacted_blas_bytes());

@@ -2,6 +2,8 @@
 
 #include "shaders/interface.h"
 #include "shaders/rt_interface.h"
+#include "util/clock.h"
+#include "util/fnv1a.h"
 #include "vulkan_rt/device/pipeline_report.h"
 #include "vulkan_rt/device/specialization.h"
 #include "vulkan_rt/device/vk_error.h"
@@ -182,8 +184,7 @@ void RtProgram::create_pipeline() {
     vk_check(rt_.vkCreateRayTracingPipelinesKHR(device, VK_NULL_HANDLE, cache.handle(), 1, &ci,
                                                 nullptr, &pipeline_),
              "compiling the ray-tracing pipeline");
-    cache.use().create_s =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    cache.use().create_s = seconds_since(t0);
     try {
         report_ = reporter.report(pipeline_);
     } catch (...) {

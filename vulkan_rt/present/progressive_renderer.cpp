@@ -3,6 +3,7 @@
 #include "render/sampler.h"
 #include "scene/features.h"
 #include "shaders/display_interface.h"
+#include "util/clock.h"
 #include "vulkan_rt/compute_mode/compute_renderer.h"
 #include "vulkan_rt/device/barriers.h"
 #include "vulkan_rt/pipeline_mode/pipeline_renderer.h"
@@ -27,10 +28,6 @@ ModeSetup prepare(const VulkanContext& ctx, const FlatScene& scene, const Progre
     const RenderOptions options = render_options(o);
     return ctx.mode() == VkMode::pipeline ? prepare_pipeline(ctx, scene, options)
                                           : prepare_compute(ctx, scene, options, o.bvh);
-}
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
 }
 
 } // namespace

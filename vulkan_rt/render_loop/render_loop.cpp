@@ -1,6 +1,7 @@
 #include "vulkan_rt/render_loop/render_loop.h"
 
 #include "render/sampler.h"
+#include "util/clock.h"
 #include "util/error.h"
 #include "vulkan_rt/render_loop/batch_session.h"
 
@@ -15,10 +16,6 @@ namespace {
 // Wall time aimed at per submission: short against display watchdogs (2 s on Windows) and
 // --time-limit, long against the ~0.1 ms cost of a submit-and-wait round trip.
 constexpr double kTargetSubmitSeconds = 0.1;
-
-double seconds_since(std::chrono::steady_clock::time_point t0) {
-    return std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
-}
 
 } // namespace
 

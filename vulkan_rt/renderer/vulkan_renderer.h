@@ -21,8 +21,8 @@ struct VulkanOptions {
     VkModeRequest mode; // --vk-mode; none: auto (resolve_vk_mode)
     // --bvh: compute mode's BVH layout (compute_mode/bvh_builder.h). The default is binary
     // because wide, and auto's per-scene choice, are not yet at least as fast on every scene
-    // (docs/gpu.md, "Why --bvh defaults to binary"; the figures: BENCHMARKS.md, sections
-    // "h200-wide-bvh" and "h200-wide-auto").
+    // (docs/gpu.md, "Why --bvh defaults to binary"; the figures: BENCHMARKS.md, section
+    // "h200-wide-auto", and docs/learnt.md, "The 8-wide tree of Embree's builder").
     BvhLayout bvh = BvhLayout::binary;
     // --pipeline-stats: the driver's statistics of the render pipeline in RenderStats::pipeline
     // (pipeline_report.h); on a device without them a note on stderr, once per device opened.
