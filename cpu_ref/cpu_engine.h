@@ -13,8 +13,8 @@
 #include "cpu_ref/rng_lanes.h"
 #include "render/stats.h"
 #include "scene/flatten.h"
-#include "shared/camera.h"
 #include "shared/alpha.h"
+#include "shared/camera.h"
 #include "shared/features.h"
 #include "shared/lights.h"
 #include "shared/path.h"
@@ -107,6 +107,15 @@ class CpuEngine {
             hit = accel_.intersect(ray, nullptr);
         }
         return hit.found;
+    }
+    // The closest hits of up to EmbreeAccel::kPacket rays: one packet where the scene is opaque,
+    // else one query each (the alpha test is made with each ray's own tag).
+    void trace_closest_group(const Ray* rays, uint32_t count, Hit* hits) const {
+        if (feature_on(scene_features, FEATURE_ALPHA)) {
+            for (uint32_t i = 0; i < count; ++i) trace_closest(rays[i], hits[i]);
+            return;
+        }
+        accel_.intersect_packet(rays, count, hits);
     }
     bool trace_occluded(const Ray& ray) const {
         if (!feature_on(scene_features, FEATURE_ALPHA)) return accel_.occluded(ray, nullptr);

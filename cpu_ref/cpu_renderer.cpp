@@ -31,6 +31,46 @@ struct TileCounters {
     uint64_t nan = 0;
 };
 
+// Adds sample s of pixel (x, y) to the film, or counts it where it is not finite (docs/design.md,
+// "No silent NaN").
+void add_sample(Film& film, uint32_t x, uint32_t y, uint32_t s, vec3 L, TileCounters& c) {
+    if (!is_finite3(L)) {
+        ++c.nan;
+        return;
+    }
+    film.add_sample(y * film.width() + x, glm::dvec3(L), s);
+}
+
+// Samples [s0, s1) of every pixel of tile (tx, ty), added to the film row by row, each pixel's
+// samples in sequence: in groups of the integrator's camera packets (a pixel's samples and the
+// next pixel's), or one by one for a debug view.
+void render_tile(const CpuIntegrator& integrator, const CpuDebugViews& views, bool view,
+                 uint32_t tx, uint32_t ty, uint32_t s0, uint32_t s1, Film& film, TileCounters& c) {
+    const uint32_t x0 = tx * kTile, y0 = ty * kTile;
+    const uint32_t x1 = std::min(x0 + kTile, film.width()),
+                   y1 = std::min(y0 + kTile, film.height());
+    CpuIntegrator::PixelSample group[CpuIntegrator::kGroup];
+    uint32_t n = 0;
+    const auto flush = [&] {
+        vec3 L[CpuIntegrator::kGroup];
+        integrator.radiance_group(group, n, L, c.rays);
+        for (uint32_t i = 0; i < n; ++i)
+            add_sample(film, group[i].x, group[i].y, group[i].sample, L[i], c);
+        n = 0;
+    };
+    for (uint32_t y = y0; y < y1; ++y)
+        for (uint32_t x = x0; x < x1; ++x)
+            for (uint32_t s = s0; s < s1; ++s) {
+                if (view) {
+                    add_sample(film, x, y, s, views.radiance(x, y, s), c);
+                    continue;
+                }
+                group[n++] = {x, y, s};
+                if (n == CpuIntegrator::kGroup) flush();
+            }
+    if (n > 0) flush();
+}
+
 } // namespace
 
 RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
@@ -85,23 +125,9 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
         tbb::parallel_for(tbb::blocked_range<uint32_t>(0, tiles_x * tiles_y),
                           [&](const tbb::blocked_range<uint32_t>& r) {
                               TileCounters& c = counters.local();
-                              for (uint32_t tile = r.begin(); tile != r.end(); ++tile) {
-                                  const uint32_t x0 = (tile % tiles_x) * kTile,
-                                                 y0 = (tile / tiles_x) * kTile;
-                                  for (uint32_t y = y0; y < std::min(y0 + kTile, H); ++y)
-                                      for (uint32_t x = x0; x < std::min(x0 + kTile, W); ++x)
-                                          for (uint32_t s = s0; s < s1; ++s) {
-                                              const vec3 L =
-                                                  view ? views.radiance(x, y, s)
-                                                       : integrator.radiance(x, y, s, c.rays);
-                                              if (!is_finite3(L)) {
-                                                  ++c.nan; // counted and dropped (docs/design.md,
-                                                           // "No silent NaN")
-                                                  continue;
-                                              }
-                                              result.film.add_sample(y * W + x, glm::dvec3(L), s);
-                                          }
-                              }
+                              for (uint32_t tile = r.begin(); tile != r.end(); ++tile)
+                                  render_tile(integrator, views, view, tile % tiles_x,
+                                              tile / tiles_x, s0, s1, result.film, c);
                           });
         counters.combine_each([&](const TileCounters& c) {
             st.rays += c.rays;

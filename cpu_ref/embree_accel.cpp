@@ -145,9 +145,26 @@ EmbreeAccel::~EmbreeAccel() {
     if (device_) rtcReleaseDevice(device_);
 }
 
+// The hit Embree ended a ray's query with (geometry, instance and triangle), exact (exact_hit).
+Hit EmbreeAccel::exact_result(const ExactRecord& record, uint32_t geom, uint32_t inst,
+                              uint32_t prim) {
+    Hit h;
+    if (geom == RTC_INVALID_GEOMETRY_ID) return h;
+    h.found = true;
+    const vec3 tuv = exact_hit(record, prim);
+    h.t = tuv.x;
+    // A flattened mesh's triangles carry their instance index as geometry ID (constructor).
+    h.instance = inst != RTC_INVALID_GEOMETRY_ID ? inst : geom;
+    h.primitive = prim;
+    h.bary = vec2(tuv.y, tuv.z);
+    return h;
+}
+
 Hit EmbreeAccel::intersect(const Ray& ray, const CoverageTest* coverage) const {
+    ExactRecord record;
     ExactQuery query;
     rtcInitIntersectContext(&query.context);
+    query.records = &record;
     query.coverage = coverage;
     RTCRayHit rh;
     rh.ray.org_x = ray.origin.x;
@@ -164,20 +181,41 @@ Hit EmbreeAccel::intersect(const Ray& ray, const CoverageTest* coverage) const {
     rh.hit.geomID = RTC_INVALID_GEOMETRY_ID;
     rh.hit.instID[0] = RTC_INVALID_GEOMETRY_ID;
     rtcIntersect1(top_, &query.context, &rh);
-    Hit h;
-    if (rh.hit.geomID == RTC_INVALID_GEOMETRY_ID) return h;
-    h.found = true;
-    const vec3 tuv = exact_hit(query, rh.hit.primID);
-    h.t = tuv.x;
-    // A flattened mesh's triangles carry their instance index as geometry ID (constructor).
-    h.instance = rh.hit.instID[0] != RTC_INVALID_GEOMETRY_ID ? rh.hit.instID[0] : rh.hit.geomID;
-    h.primitive = rh.hit.primID;
-    h.bary = vec2(tuv.y, tuv.z);
-    return h;
+    return exact_result(record, rh.hit.geomID, rh.hit.instID[0], rh.hit.primID);
+}
+
+void EmbreeAccel::intersect_packet(const Ray* rays, uint32_t count, Hit* hits) const {
+    ExactRecord records[kPacket];
+    ExactQuery query;
+    rtcInitIntersectContext(&query.context);
+    query.context.flags = RTC_INTERSECT_CONTEXT_FLAG_COHERENT;
+    query.records = records;
+    alignas(32) int valid[kPacket];
+    alignas(32) RTCRayHit8 rh;
+    for (uint32_t i = 0; i < kPacket; ++i) {
+        valid[i] = i < count ? -1 : 0;
+        const Ray& ray = rays[i < count ? i : 0];
+        rh.ray.org_x[i] = ray.origin.x;
+        rh.ray.org_y[i] = ray.origin.y;
+        rh.ray.org_z[i] = ray.origin.z;
+        rh.ray.dir_x[i] = ray.dir.x;
+        rh.ray.dir_y[i] = ray.dir.y;
+        rh.ray.dir_z[i] = ray.dir.z;
+        rh.ray.tnear[i] = 0.0f;
+        rh.ray.tfar[i] = embree_tfar(ray.tmax);
+        rh.ray.mask[i] = 0xFFFFFFFFu;
+        rh.ray.time[i] = 0.0f;
+        rh.ray.flags[i] = 0;
+        rh.hit.geomID[i] = RTC_INVALID_GEOMETRY_ID;
+        rh.hit.instID[0][i] = RTC_INVALID_GEOMETRY_ID;
+    }
+    rtcIntersect8(valid, top_, &query.context, &rh);
+    for (uint32_t i = 0; i < count; ++i)
+        hits[i] = exact_result(records[i], rh.hit.geomID[i], rh.hit.instID[0][i], rh.hit.primID[i]);
 }
 
 bool EmbreeAccel::occluded(const Ray& ray, const CoverageTest* coverage) const {
-    ExactQuery query;
+    ExactQuery query; // occlusion records nothing
     rtcInitIntersectContext(&query.context);
     query.coverage = coverage;
     RTCRay r;

@@ -37,10 +37,19 @@ class EmbreeAccel {
     Hit intersect(const Ray& ray, const CoverageTest* coverage) const;
     bool occluded(const Ray& ray, const CoverageTest* coverage) const;
 
+    // The closest hits of up to kPacket opaque rays (no alpha) traced together as one of Embree's
+    // packets (rtcIntersect8): for coherent rays, such as the camera rays of one pixel, its
+    // traversal visits each node once for all of them. Each hit is the one intersect() finds,
+    // except where two triangles are hit at the same distance, which the packet may order
+    // differently.
+    static constexpr uint32_t kPacket = 8;
+    void intersect_packet(const Ray* rays, uint32_t count, Hit* hits) const;
+
     // Bytes Embree holds for the acceleration structures (its memory monitor).
     uint64_t memory_bytes() const { return uint64_t(std::max<int64_t>(bytes_.load(), 0)); }
 
   private:
+    static Hit exact_result(const ExactRecord& record, uint32_t geom, uint32_t inst, uint32_t prim);
     RTCDevice device_ = nullptr;
     RTCScene top_ = nullptr;
     std::vector<RTCScene> meshes_; // per mesh; null for a mesh placed in world space

@@ -1,5 +1,7 @@
 #include "cpu_ref/exact_triangles.h"
 
+#include "cpu_ref/isa_clones.h"
+
 #include <glm/geometric.hpp>
 
 #include <algorithm>
@@ -49,19 +51,14 @@ bool keep_candidate(const RTCFilterFunctionNArguments* args, unsigned i, bool re
         const uint32_t prim = RTCHitN_primID(hit, n, i);
         const unsigned inst = RTCHitN_instID(hit, n, i, 0);
         // A flattened mesh's triangles carry their instance index as geometry ID (embree_accel).
-        const uint32_t instance = inst != RTC_INVALID_GEOMETRY_ID ? inst : RTCHitN_geomID(hit, n, i);
+        const uint32_t instance =
+            inst != RTC_INVALID_GEOMETRY_ID ? inst : RTCHitN_geomID(hit, n, i);
         const vec3 h = tested ? tuv : exact_margin_hit(mesh, prim, org, dir);
         if (!query->coverage->covers(query->coverage->engine, instance, prim, vec2(h.y, h.z),
                                      query->coverage->ray))
             return false;
     }
-    if (record) {
-        query->mesh = &mesh;
-        query->org = org;
-        query->dir = dir;
-        query->tested = tested;
-        query->tuv = tuv;
-    }
+    if (record) query->records[i] = ExactRecord{&mesh, org, dir, tested, tuv};
     return true;
 }
 
@@ -114,17 +111,17 @@ float grow_triangles(const ExactMesh& mesh, double delta, vec3* out) {
     return float(2.0 * delta * longest);
 }
 
-void exact_intersect_filter(const RTCFilterFunctionNArguments* args) {
+TP_ISA_CLONES void exact_intersect_filter(const RTCFilterFunctionNArguments* args) {
     filter(args, true);
 }
 
-void exact_occluded_filter(const RTCFilterFunctionNArguments* args) {
+TP_ISA_CLONES void exact_occluded_filter(const RTCFilterFunctionNArguments* args) {
     filter(args, false);
 }
 
-vec3 exact_hit(const ExactQuery& query, uint32_t primitive) {
-    if (query.tested) return query.tuv;
-    return exact_margin_hit(*query.mesh, primitive, query.org, query.dir);
+TP_ISA_CLONES vec3 exact_hit(const ExactRecord& record, uint32_t primitive) {
+    if (record.tested) return record.tuv;
+    return exact_margin_hit(*record.mesh, primitive, record.org, record.dir);
 }
 
 vec3 exact_margin_hit(const ExactMesh& mesh, uint32_t primitive, vec3 org, vec3 dir) {

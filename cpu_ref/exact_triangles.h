@@ -43,15 +43,21 @@ struct CoverageTest {
     Ray ray; // in world space, as the engine traced it
 };
 
-// An Embree query context that the filters below fill in: the candidate they accepted last (the
-// nearest, since Embree offers only candidates nearer than the current hit), the ray as its
-// geometry saw it, and the exact test's result where they ran it.
-struct ExactQuery {
-    RTCIntersectContext context; // first: Embree passes &context to the filters
+// What the filters below keep of the candidate they accepted last for one ray (the nearest, since
+// Embree offers only candidates nearer than the current hit): the ray as its geometry saw it, and
+// the exact test's result where they ran it.
+struct ExactRecord {
     const ExactMesh* mesh = nullptr;
     vec3 org{0.0f}, dir{0.0f};
     bool tested = false;
     vec3 tuv{0.0f};
+};
+
+// An Embree query context that the filters below fill in: one record per ray of the query (a
+// single ray, or the lanes of a packet, indexed as Embree indexes them in the filter's arguments).
+struct ExactQuery {
+    RTCIntersectContext context; // first: Embree passes &context to the filters
+    ExactRecord* records = nullptr;
     const CoverageTest* coverage = nullptr; // none: every surface is opaque
 };
 
@@ -74,13 +80,15 @@ double mesh_extent(const ExactMesh& mesh, double camera_extent);
 // distance); a zero-area triangle stays as it is (the exact test never accepts it).
 float grow_triangles(const ExactMesh& mesh, double delta, vec3* out);
 
-// The intersection and occlusion filters of a geometry whose user data is its ExactMesh.
+// The intersection and occlusion filters of a geometry whose user data is its ExactMesh. These
+// and exact_hit run once or more per query: they are compiled in both instruction-set copies
+// (isa_clones.h).
 void exact_intersect_filter(const RTCFilterFunctionNArguments* args);
 void exact_occluded_filter(const RTCFilterFunctionNArguments* args);
 
-// The exact distance and barycentrics (weights of vertices 1 and 2) of the hit the query ended
-// with, triangle `primitive` of query.mesh.
-vec3 exact_hit(const ExactQuery& query, uint32_t primitive);
+// The exact distance and barycentrics (weights of vertices 1 and 2) of the hit a ray's query
+// ended with, triangle `primitive` of record.mesh.
+vec3 exact_hit(const ExactRecord& record, uint32_t primitive);
 
 // The same for a ray (org, dir) and triangle `primitive` of `mesh`, where the margin accepted the
 // hit (exact_hit's arithmetic).

@@ -5,25 +5,13 @@
 
 #include "cpu_ref/cpu_engine.h"
 #include "cpu_ref/embree_accel.h"
+#include "cpu_ref/isa_clones.h"
 #include "render/stats.h"
 #include "shared/path_log.h"
 
 #include <array>
 #include <utility>
 #include <vector>
-
-// The path loop is compiled twice, for baseline x86-64 and for x86-64-v3 (AVX2, FMA, BMI2), and
-// the dynamic loader picks the second where the CPU has it (GCC's function multiversioning, an
-// ifunc): the reference still runs on any x86-64 and is faster where it can (BENCHMARKS.md).
-// `flatten` inlines the whole loop (path_radiance and what it calls) into each copy: without it
-// GCC keeps path_radiance out of line, compiled once for baseline x86-64, and the x86-64-v3 copy
-// is only a wrapper around it. integrator.cpp is compiled with -ffp-contract=off
-// (cpu_ref/CMakeLists.txt): neither copy fuses a multiply-add, so both give bit-identical images.
-#if defined(__x86_64__) && defined(__GNUC__) && !defined(__clang__)
-#define TP_PATH_LOOP_CLONES __attribute__((flatten, target_clones("default", "arch=x86-64-v3")))
-#else
-#define TP_PATH_LOOP_CLONES
-#endif
 
 namespace tp {
 
@@ -35,26 +23,36 @@ class CpuIntegrator {
     CpuIntegrator(const FlatScene& scene, const EmbreeAccel& accel, uint32_t features,
                   uint32_t seed, uint32_t sampler = SAMPLER_RANDOM);
 
-    // Radiance estimate of sample `sample_index` of pixel (x, y); rays are counted into `rays`.
-    vec3 radiance(uint32_t x, uint32_t y, uint32_t sample_index, RayCounts& rays) const {
-        return (this->*loop_)(x, y, sample_index, rays);
+    // A pixel's sample: pixel (x, y), sample index `sample`.
+    struct PixelSample {
+        uint32_t x, y, sample;
+    };
+    static constexpr uint32_t kGroup = EmbreeAccel::kPacket;
+
+    // Radiance estimates of up to kGroup samples into L; rays are counted into `rays`. Their camera
+    // rays are traced together (CpuEngine::trace_closest_group), then each path to its end, in
+    // the group's order, by the shared loop (path_begin, path_at_hit, path_step).
+    void radiance_group(const PixelSample* samples, uint32_t count, vec3* L,
+                        RayCounts& rays) const {
+        (this->*loop_)(samples, count, L, rays);
     }
 
-    // The same sample with every vertex appended to `log` (path logs, shared/path_log.h): the
-    // loop with every material feature compiled in and recording on.
+    // One sample with every vertex appended to `log` (path logs, shared/path_log.h): the loop
+    // with every material feature compiled in and recording on, the camera ray traced alone.
     vec3 record(uint32_t x, uint32_t y, uint32_t sample_index, RayCounts& rays,
                 std::vector<PathVertex>& log) const;
 
   private:
-    // The path loop compiled for the feature bits `Fixed` (a subset of kCpuFixedFeatures).
+    // radiance_group for the feature bits `Fixed` (a subset of kCpuFixedFeatures).
     template <uint32_t Fixed>
-    vec3 radiance_for(uint32_t x, uint32_t y, uint32_t sample_index, RayCounts& rays) const;
-    // The loop itself, in the two instruction-set copies; Record: append a PathVertex per
-    // vertex to *log.
-    template <uint32_t Fixed, bool Record>
-    TP_PATH_LOOP_CLONES vec3 trace_path(uint32_t x, uint32_t y, uint32_t sample_index,
-                                        RayCounts& rays, std::vector<PathVertex>* log) const;
-    using Loop = vec3 (CpuIntegrator::*)(uint32_t, uint32_t, uint32_t, RayCounts&) const;
+    void group_for(const PixelSample* samples, uint32_t count, vec3* L, RayCounts& rays) const;
+    // The loops themselves, in the two instruction-set copies (isa_clones.h).
+    template <uint32_t Fixed>
+    TP_ISA_CLONES void trace_group(const PixelSample* samples, uint32_t count, vec3* L,
+                                   RayCounts& rays) const;
+    TP_ISA_CLONES vec3 trace_recorded(uint32_t x, uint32_t y, uint32_t sample_index,
+                                      RayCounts& rays, std::vector<PathVertex>& log) const;
+    using Loop = void (CpuIntegrator::*)(const PixelSample*, uint32_t, vec3*, RayCounts&) const;
     template <size_t... I>
     static std::array<Loop, sizeof...(I)> make_loops(std::index_sequence<I...>);
 

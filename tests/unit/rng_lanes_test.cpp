@@ -4,8 +4,8 @@
 // far past any max depth, arbitrary seeds). The lanes reuse rng.h's functions, so a difference can
 // only come from the lane loop itself (a lane mapped to the wrong pair, a vectorization that is
 // not exact), which is what this catches: equality is exact, there is no tolerance to justify.
-// The lanes are computed through the path loop's instruction-set copies (TP_PATH_LOOP_CLONES), so
-// on an AVX2 machine the vectorized code is the one tested.
+// The lanes are computed through the path loop's instruction-set copies (TP_ISA_CLONES,
+// cpu_ref/isa_clones.h), so on an AVX2 machine the vectorized code is the one tested.
 #include "cpu_ref/integrator.h"
 #include "cpu_ref/rng_lanes.h"
 
@@ -25,8 +25,8 @@ tp::RngKey random_key(std::mt19937_64& gen, uint32_t sampler) {
     return tp::rng_key(sampler, any(gen), any(gen), sample);
 }
 
-TP_PATH_LOOP_CLONES void words_as_in_the_loop(const tp::RngKey& key, uint32_t bounce,
-                                              tp::BounceWords& out) {
+TP_ISA_CLONES void words_as_in_the_loop(const tp::RngKey& key, uint32_t bounce,
+                                        tp::BounceWords& out) {
     tp::bounce_words(key, bounce, out);
 }
 
