@@ -256,6 +256,7 @@ TEST_CASE("meshes without triangles get no BLAS and their instances no record", 
     scene.meshes[0] = {0, 0, 2, 4, 0, 0, 0, 0};
     scene.meshes[1] = {2, 4, 0, 0, 0, 0, 0, 0}; // empty
     scene.meshes[2] = {2, 4, 1, 3, 0, 0, 0, 0};
+    scene.materials.resize(1); // every instance's material 0: opaque
     scene.instances.resize(4);
     for (uint32_t i = 0; i < 4; ++i) scene.instances[i].mesh = i % 3; // 0, 1, 2, 0
     const std::vector<BlasGeometry> geoms = blas_geometries(scene, {0, 0, 0});
