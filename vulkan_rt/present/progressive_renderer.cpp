@@ -41,7 +41,9 @@ ProgressiveRenderer::ProgressiveRenderer(const VulkanContext& ctx, const FlatSce
       pixels_(ctx,
               VkDeviceSize(scene.params.camera.width) * scene.params.camera.height *
                   sizeof(uint32_t),
-              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT, false),
+              VK_BUFFER_USAGE_STORAGE_BUFFER_BIT | VK_BUFFER_USAGE_TRANSFER_SRC_BIT |
+                  VK_BUFFER_USAGE_TRANSFER_DST_BIT,
+              false),
       display_(ctx, tp_spirv_display, sizeof(tp_spirv_display), DISPLAY_BINDING_COUNT,
                sizeof(DisplayParams), RenderConstants{}, false) {
     display_.bind(DISPLAY_BINDING_ACCUM, session_->accumulators());
