@@ -250,20 +250,19 @@ void BatchSession::read_buffer(const Buffer& src, void* dst, size_t bytes) const
     std::memcpy(dst, host.mapped(), bytes);
 }
 
-// One submission: clear the cut-short and next-item counters, launch the render invocations,
-// resolve the estimates into the accumulators, record `after`, copy the counters back.
+// One submission: launch the render invocations, resolve the estimates into the accumulators,
+// record `after`, copy the counters back. The shaders clear the cut-short and next-item
+// counters (interface.h).
 void BatchSession::launch(const std::function<void(VkCommandBuffer)>& after) {
     const VkPipelineStageFlags stage = stages();
     const uint64_t resident = resident_invocations();
     const uint32_t invocations = render_invocations(params_.item_count, resident);
     const uint32_t rows = params_.row_end - params_.row_begin;
     const uint32_t resolve_groups =
-        (width_ * rows * slots_ + RESOLVE_GROUP_SIZE - 1) / RESOLVE_GROUP_SIZE;
+        (width_ * rows * resolve_slots(params_.sample_count, slots_) + RESOLVE_GROUP_SIZE - 1) /
+        RESOLVE_GROUP_SIZE;
     ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
         record_shader_barrier(cmd, stage); // the previous launch's accumulator writes
-        vkCmdFillBuffer(cmd, counters_.handle(), COUNTER_TRUNCATED * sizeof(uint32_t),
-                        (COUNTER_WORDS - COUNTER_TRUNCATED) * sizeof(uint32_t), 0);
-        record_shader_barrier(cmd, stage);
         timer_.record_mark(cmd, 0);
         if (debug_render_)
             tracer_.record_debug_launch(cmd, params_, invocations);
