@@ -30,6 +30,10 @@ struct BenchOptions {
     double sizes_time_s = 0.5;
     uint32_t sizes_rounds = 2;
 
+    bool frame_loop = false; // the viewer's frame loop on each Vulkan backend (frame_loop.h)
+    std::vector<uint32_t> frame_loop_spp{1, 4, 16}; // samples per frame of each point
+    uint32_t frame_loop_frames = 100;               // timed frames of each point
+
     std::vector<std::string> scenes;             // catalogue names (scenes.h) or .json/.obj files
     std::vector<std::string> backends;           // cpu, vulkan (every mode), vulkan:compute, ...
     std::vector<std::string> samplers{"random"}; // ladder: each backend with each sampler

@@ -93,6 +93,7 @@ json result_header(const BenchRun& run, const std::vector<Section>& run_sections
         {"spec_rounds", o.spec_rounds},
         {"pipeline_stats", o.pipeline_stats},
         {"sizes", {{"list", size_list}, {"time_s", o.sizes_time_s}, {"rounds", o.sizes_rounds}}},
+        {"frame_loop", {{"spp", o.frame_loop_spp}, {"frames", o.frame_loop_frames}}},
         {"peer",
          {{"spp", o.peer_spp},
           {"threads", o.peer_threads},

@@ -88,6 +88,16 @@ Subcommand add_bench_command(CLI::App& app) {
     c->add_option("--sizes-rounds", o.sizes_rounds, "Sizes: best of this many rounds")
         ->check(CLI::Range(1u, 100u))
         ->capture_default_str();
+    c->add_flag("--frame-loop", o.frame_loop,
+                "The viewer's frame loop per Vulkan backend/mode: time per frame and its split "
+                "(trace, resolve, display, host) at --frame-loop-spp samples per frame");
+    c->add_option("--frame-loop-spp", o.frame_loop_spp, "Frame loop: samples per frame")
+        ->delimiter(',')
+        ->check(CLI::Range(1u, 1024u))
+        ->capture_default_str();
+    c->add_option("--frame-loop-frames", o.frame_loop_frames, "Frame loop: timed frames per point")
+        ->check(CLI::Range(1u, 100000u))
+        ->capture_default_str();
     c->add_option("--scenes", o.scenes,
                   "Scenes: " + catalogue_names() + ", or .json/.obj/.gltf/.glb files")
         ->delimiter(',')
