@@ -180,10 +180,7 @@ int run_render(const RenderArgs& a) {
         const std::vector<float>&r = img.channel("R"), &g = img.channel("G"), &b = img.channel("B");
         float stops = 0.0f;
         if (a.exposure == "auto") {
-            std::vector<double> peaks(r.size());
-            for (size_t i = 0; i < peaks.size(); ++i)
-                peaks[i] = double(std::max({r[i], g[i], b[i]}));
-            stops = auto_exposure_stops(peaks);
+            stops = auto_exposure_stops(r, g, b);
             fmt::print(stderr, "twinpath: --png exposure {:+.2f} stops (auto)\n", stops);
         } else {
             stops = float(std::stod(a.exposure));

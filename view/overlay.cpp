@@ -99,15 +99,17 @@ void Overlay::build(const OverlayText& t, bool visible) {
         const std::string spp = spp_text(t);
         if (full) {
             ImGui::TextUnformatted(t.scene.c_str());
-            ImGui::TextWrapped("%s   %.1f ms/frame   %.1f Mrays/s", spp.c_str(), t.frame_ms,
-                               t.mrays_per_s);
+            ImGui::TextWrapped("%s   %.1f ms/frame   %.1f Mrays/s   exposure %+.1f", spp.c_str(),
+                               t.frame_ms, t.mrays_per_s, t.exposure);
             ImGui::TextWrapped("%s (%s)", t.device.c_str(), t.mode.c_str());
             ImGui::TextWrapped("features: %s", t.features.c_str());
         } else {
             ImGui::TextWrapped("%s  %.0f ms", spp.c_str(), t.frame_ms);
         }
         for (const std::string& line : t.status) ImGui::TextWrapped("%s", line.c_str());
-        if (full) ImGui::TextDisabled("P flags  Ctrl+S save  C compare  Esc leave  H hide");
+        if (full)
+            ImGui::TextDisabled(
+                "P flags  Ctrl+S save  C compare  Esc leave  H hide  [ ] X exposure");
         ImGui::PopTextWrapPos();
         ImGui::End();
     }

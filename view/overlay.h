@@ -19,6 +19,7 @@ struct OverlayText {
     double pass_fraction = 0; // the share of the rows that have one sample more than spp
     double frame_ms = 0;
     double mrays_per_s = 0;
+    float exposure = 0; // the display's exposure in stops
     std::string device, mode, scene, features;
     std::vector<std::string> status; // compare and path-diff results, saved files
 };

@@ -1,5 +1,6 @@
 #include "view/viewer.h"
 
+#include "image/exposure.h"
 #include "image/png_io.h"
 #include "render/render_header.h"
 #include "render/sampler.h"
@@ -37,6 +38,8 @@ constexpr double kOrbitPerPixel = 2.0;
 constexpr double kDollyPerNotch = 0.9;
 constexpr double kFovPerNotch = 2.0;
 constexpr double kFlyStep = 0.02;
+// [ and ] change the display's exposure by half a stop (a factor sqrt 2).
+constexpr float kExposureStep = 0.5f;
 // The live compare's two-sample test estimates each pixel's variance from its own samples (none
 // from one sample) and is calibrated from 16 spp on (docs/compare.md).
 constexpr uint32_t kMinCompareSpp = 16;
@@ -111,7 +114,9 @@ class Viewer {
         const std::vector<std::string> features = analyze_features(scene).names();
         for (const std::string& f : features)
             text_.features += (text_.features.empty() ? "" : ", ") + f;
-        renderer_.set_display(bgra, 0.0f);
+        auto_exposure_ = o.exposure == "auto";
+        if (!auto_exposure_) text_.exposure = std::stof(o.exposure);
+        renderer_.set_display(bgra, text_.exposure);
     }
 
     // Runs the loop until --frames or the window closes; `window` null: headless.
@@ -138,6 +143,8 @@ class Viewer {
             const auto t0 = std::chrono::steady_clock::now();
             const uint64_t rays_before = renderer_.rays();
             const bool rendered = renderer_.frame();
+            // --exposure auto: from the first whole pass, the earliest image of every pixel.
+            if (auto_exposure_ && renderer_.spp() >= 1) set_auto_exposure();
             const bool last = o_.frames > 0 && frame + 1 == o_.frames;
             if (window_engine_) window_engine_->serve(renderer_, rendered && !last);
             if (presenter) {
@@ -246,6 +253,14 @@ class Viewer {
         case 'C':
             start_compare();
             break;
+        case '[':
+        case ']':
+            text_.exposure += k == '[' ? -kExposureStep : kExposureStep;
+            renderer_.set_display(bgra_, text_.exposure);
+            break;
+        case 'X':
+            set_auto_exposure();
+            break;
         case 27:
             picture_.reset();
             status({});
@@ -274,9 +289,21 @@ class Viewer {
         opt.sampler = o_.progressive.sampler;
         write_exr(base + ".exr", render_exr(r, current_scene(), opt));
         const ExrImage img = r.film.to_exr();
-        write_png(base + ".png", int(img.width), int(img.height),
-                  tonemap_srgb8(img.channel("R"), img.channel("G"), img.channel("B"), 0.0f));
+        write_png(
+            base + ".png", int(img.width), int(img.height),
+            tonemap_srgb8(img.channel("R"), img.channel("G"), img.channel("B"), text_.exposure));
         status({fmt::format("saved {}.exr and {}.png ({} spp)", base, base, r.stats.spp)});
+    }
+
+    // The exposure that maps the accumulation's 99th percentile to white (image/exposure.h), as
+    // render --exposure auto does.
+    void set_auto_exposure() {
+        auto_exposure_ = false;
+        const ExrImage img = renderer_.result().film.to_exr();
+        text_.exposure = auto_exposure_stops(img.channel("R"), img.channel("G"), img.channel("B"));
+        renderer_.set_display(bgra_, text_.exposure);
+        status({fmt::format("exposure {:+.2f} stops (auto, from {} spp)", text_.exposure,
+                            renderer_.spp())});
     }
 
     void start_compare() {
@@ -350,6 +377,7 @@ class Viewer {
     OverlayText text_;
     FrameTimes times_;
     bool restart_ = false, show_overlay_ = true;
+    bool auto_exposure_ = false; // --exposure auto, until the first whole pass
     std::unique_ptr<Buffer> picture_;
     std::unique_ptr<CpuJob> compare_job_, pathdiff_job_;
     // The live compare's side of the window (served every frame) and its stop (a camera move).

@@ -317,7 +317,7 @@ TEST_CASE("auto picks pipeline where supported and pipeline elsewhere is a clear
 
 // The words are what the command line reads and the outputs write (RenderStats::mode in the
 // stats JSON, the bench and stress reports): saved files and the other tests depend on them.
-TEST_CASE("the mode and backend words read back as what they name; other words are refused",
+TEST_CASE("the mode and backend words read back as what they name, other words are refused",
           "[gpu]") {
     CHECK(std::string(vk_mode_name(VkMode::compute)) == "compute");
     CHECK(std::string(vk_mode_name(VkMode::pipeline)) == "pipeline");

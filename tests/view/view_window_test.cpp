@@ -142,6 +142,40 @@ TEST_CASE("view --sampler sobol shows render --sampler sobol --png", "[view]") {
     check_matches_render(dir, "shot.png", 11, "--sampler sobol");
 }
 
+// The display's exposure: --exposure and the [ ] keys scale the radiance before the display
+// transform exactly as render --png --exposure does; --exposure auto takes the first whole pass
+// (1 spp here) and finds what render --exposure auto finds for the same 1-spp image.
+TEST_CASE("view's exposure: --exposure, [ and ], and auto as render --png has them", "[view]") {
+    const fs::path dir = tp::test::temp_dir("view-exposure");
+    const std::string headless =
+        "cd " + shell_quote(dir.string()) + " && env -u DISPLAY -u WAYLAND_DISPLAY ";
+    const auto v =
+        run(headless +
+            tp::test::twinpath("view cornell --headless --width 40 --height 30 --seed 7 "
+                               "--frames 5 --spp-per-frame 1 --exposure -2 --screenshot "
+                               "shot.png --script " +
+                               shell_quote(script(dir, "1 key [\n3 key ]\n3 key ]\n").string())));
+    INFO(v.out);
+    REQUIRE(v.exit_code == 0);
+    check_matches_render(dir, "shot.png", 5, "--exposure -1.5");
+
+    const auto a = run(headless + tp::test::twinpath("view cornell --headless --width 40 "
+                                                     "--height 30 --seed 7 --frames 3 "
+                                                     "--spp-per-frame 1 --exposure auto"));
+    INFO(a.out);
+    REQUIRE(a.exit_code == 0);
+    const auto r = run(tp::test::twinpath(
+        "render cornell --backend vulkan --width 40 --height 30 --seed 7 --spp 1 -o " +
+        shell_quote((dir / "one.exr").string()) + " --png " +
+        shell_quote((dir / "one.png").string()) + " --exposure auto"));
+    INFO(r.out);
+    REQUIRE(r.exit_code == 0);
+    const size_t at = r.out.find("--png exposure ");
+    REQUIRE(at != std::string::npos);
+    const std::string stops = r.out.substr(at + 15, r.out.find(" stops", at) - at - 15);
+    CHECK(a.out.find("view: exposure " + stops + " stops (auto, from 1 spp)") != std::string::npos);
+}
+
 // view reads its scene through the same loader as render: a glTF scene opens with its first
 // camera, its materials mapped as for render (docs/scene-format.md).
 // A small window gets the compact overlay, within the top of the window: below it the window
@@ -166,7 +200,7 @@ TEST_CASE("view opens a glTF scene as render does", "[view]") {
     check_matches_render(dir, "shot.png", 4, "", {"gltf_materials"});
 }
 
-TEST_CASE("a scripted camera move restarts the accumulation; S saves EXR and PNG", "[view]") {
+TEST_CASE("a scripted camera move restarts the accumulation, and S saves EXR and PNG", "[view]") {
     const fs::path dir = tp::test::temp_dir("view-restart");
     // Frames 0-3 accumulate 4 spp; the drag before frame 4 restarts; frames 4-5 add 2 spp; the
     // S before frame 6 saves those 2 (frames 0-6: 7 frames).
