@@ -157,6 +157,7 @@ RenderResult ProgressiveRenderer::result() const {
     st.wall_time_s = seconds_since(started_);
     st.build_time_s = mode_.accel.build_time_s;
     st.accel_bytes = mode_.accel.bytes;
+    count_triangles(st, scene_);
     st.scene_features = analyze_features(scene_).names();
     r.film = session_->read_back(st);
     return r;

@@ -42,6 +42,7 @@ RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
     st.height = scene.params.camera.height;
     st.build_time_s = accel.build_time_s;
     st.accel_bytes = accel.bytes;
+    count_triangles(st, scene);
     for (const auto& [key, value] : accel.extra) st.extra[key] = value;
     st.pipeline = accel.pipeline;
 
