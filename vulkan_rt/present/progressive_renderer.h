@@ -36,7 +36,7 @@ struct ProgressiveOptions {
     uint32_t samples_per_frame = 0;
     double target_seconds = 1.0 / 60.0;
     double whole_frame_seconds = 0.1;
-    BvhLayout bvh = BvhLayout::binary; // compute mode's BVH layout (bvh_builder.h)
+    BvhLayout bvh = BvhLayout::automatic; // compute mode's BVH layout (bvh_builder.h)
 };
 
 class ProgressiveRenderer {
