@@ -5,7 +5,7 @@
 //                     (the default; docs/bench.md, "Error, reference and efficiency");
 //   --table           rays/s and time over depth and spp (the seed thesis's Table 5.3);
 //   --specialization  the scene-specialized path loop against the one with every feature;
-//   --sizes           rays/s against image size;
+//   --sizes           rays/s against image size (and, with --scene-sizes, scene size);
 //   --frame-loop      the viewer's frame loop: time per frame and its split at 1, 4, 16 spp.
 // Everything measured goes into one JSON result (bench.json, run_sections.h), which is the
 // record of the run; its tables, plots and markdown section are the lab's (twinpath-lab
@@ -18,15 +18,17 @@
 #include "bench/ladder.h"
 #include "bench/reference.h"
 #include "bench/run_sections.h"
+#include "bench/scenes.h"
 #include "bench/sizes.h"
 #include "bench/specialization.h"
 #include "bench/sweep.h"
 #include "util/error.h"
 #include "util/progress_bar.h"
 
-#include <fmt/core.h>
+#include <fmt/format.h>
 #include <nlohmann/json.hpp>
 
+#include <algorithm>
 #include <cmath>
 
 using nlohmann::json;
@@ -164,12 +166,24 @@ void validate(const BenchOptions& o) {
         if (v < 1) input_error("--frame-loop-spp: samples per frame start at 1, got {}", v);
     if (!(o.sizes_time_s > 0) || !std::isfinite(o.sizes_time_s))
         input_error("--sizes-time must be a positive number of seconds, got {}", o.sizes_time_s);
+    if (!o.scene_sizes.empty() && !o.sizes)
+        input_error("--scene-sizes goes with --sizes (the scenes' rays/s at each image size)");
+    const std::vector<std::string>& families = sized_scene_families();
+    if (std::find(families.begin(), families.end(), o.scene_sizes_family) == families.end())
+        input_error("--scene-sizes-family: '{}' is not one of {}", o.scene_sizes_family,
+                    fmt::join(families, ", "));
+    for (uint32_t n : o.scene_sizes)
+        if (n < 1 || n > kMaxCopies)
+            input_error("--scene-sizes: copies are 1 to {}, got {}", kMaxCopies, n);
 }
 
 } // namespace
 
-int run_bench(const BenchOptions& o) {
-    validate(o);
+int run_bench(const BenchOptions& options) {
+    validate(options);
+    BenchOptions o = options;
+    for (uint32_t n : o.scene_sizes)
+        o.scenes.push_back(sized_scene_name({o.scene_sizes_family, n}));
     const bool none = !o.ladder && !o.table && !o.specialization && !o.sizes && !o.frame_loop;
     std::vector<Section> sections;
     if (o.ladder || none) sections.push_back({"ladder", true, ladder_steps, ladder});

@@ -92,6 +92,7 @@ void write_stats_json(const std::string& path, const RenderStats& s) {
     j["threads"] = s.threads;
     j["wall_time_s"] = s.wall_time_s;
     j["build_time_s"] = s.build_time_s;
+    j["upload_time_s"] = s.upload_time_s >= 0 ? nlohmann::json(s.upload_time_s) : nullptr;
     j["gpu_time_s"] = s.gpu_time_s >= 0 ? nlohmann::json(s.gpu_time_s) : nlohmann::json(nullptr);
     j["rays"] = {{"camera", s.rays.camera},
                  {"extension", s.rays.extension},
@@ -101,6 +102,8 @@ void write_stats_json(const std::string& path, const RenderStats& s) {
     j["samples"] = s.samples;
     j["nan_samples"] = s.nan_samples;
     j["accel_bytes"] = s.accel_bytes;
+    j["device_memory_peak_bytes"] =
+        s.device_memory_peak_bytes > 0 ? nlohmann::json(s.device_memory_peak_bytes) : nullptr;
     j["triangles_unique"] = s.triangles_unique;
     j["triangles_instanced"] = s.triangles_instanced;
     j["features"] = {

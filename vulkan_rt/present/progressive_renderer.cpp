@@ -156,10 +156,12 @@ RenderResult ProgressiveRenderer::result() const {
     st.spp = spp();
     st.wall_time_s = seconds_since(started_);
     st.build_time_s = mode_.accel.build_time_s;
+    st.upload_time_s = mode_.accel.upload_time_s;
     st.accel_bytes = mode_.accel.bytes;
     count_triangles(st, scene_);
     st.scene_features = analyze_features(scene_).names();
     r.film = session_->read_back(st);
+    st.device_memory_peak_bytes = ctx_.memory_tally().peak();
     return r;
 }
 
