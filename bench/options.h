@@ -29,6 +29,16 @@ struct BenchOptions {
                                         "1024x1024", "1920x1080", "3840x2160"};
     double sizes_time_s = 0.5;
     uint32_t sizes_rounds = 2;
+    // Sizes: a point renders exactly this many spp instead of for sizes_time_s; 0: by time.
+    uint32_t sizes_spp = 0;
+    // Sizes' scene-size axis: the scenes `<scene_sizes_family>_<N>` for each N (scenes.h,
+    // SizedScene), after those of `scenes`.
+    std::vector<uint32_t> scene_sizes;
+    std::string scene_sizes_family = "buddhas";
+
+    bool frame_loop = false; // the viewer's frame loop on each Vulkan backend (frame_loop.h)
+    std::vector<uint32_t> frame_loop_spp{1, 4, 16}; // samples per frame of each point
+    uint32_t frame_loop_frames = 100;               // timed frames of each point
 
     std::vector<std::string> scenes;             // catalogue names (scenes.h) or .json/.obj files
     std::vector<std::string> backends;           // cpu, vulkan (every mode), vulkan:compute, ...

@@ -1,6 +1,8 @@
 #include "bench/result_json.h"
 
 #include <cmath>
+#include <sstream>
+#include <string>
 
 using nlohmann::json;
 
@@ -16,6 +18,17 @@ json number_or_null(const std::optional<double>& v) {
 
 json gpu_seconds(double gpu_s) {
     return gpu_s >= 0 ? number_or_null(gpu_s) : json(nullptr);
+}
+
+json build_stages_json(const RenderStats& stats) {
+    const auto it = stats.extra.find("bvh_build_stages");
+    if (it == stats.extra.end()) return nullptr;
+    json stages = json::object();
+    std::istringstream in(it->second);
+    std::string name;
+    double seconds = 0;
+    while (in >> name >> seconds) stages[name] = seconds;
+    return stages;
 }
 
 json rays_json(const RayCounts& rays) {

@@ -18,6 +18,11 @@ nlohmann::json number_or_null(const std::optional<double>& v);
 // GPU time is negative when the backend has no timestamp queries (RenderStats::gpu_time_s).
 nlohmann::json gpu_seconds(double gpu_s);
 
+// Compute mode's BVH build, seconds per stage ({"primitives": s, "embree": s, ...}) from the
+// render's extra.bvh_build_stages (vulkan_rt/compute_mode/bvh_builder.h, bvh_stats: "name
+// seconds" pairs); null for a render without it (pipeline mode, the CPU).
+nlohmann::json build_stages_json(const RenderStats& stats);
+
 // {"camera": n, "extension": n, "shadow": n}
 nlohmann::json rays_json(const RayCounts& rays);
 

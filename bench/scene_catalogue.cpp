@@ -3,6 +3,9 @@
 // files listed in ../shared/assets/README.md, which are fixed data.
 #include "bench/scenes.h"
 
+#include <fmt/format.h>
+
+#include <algorithm>
 #include <array>
 #include <cmath>
 
@@ -168,7 +171,78 @@ json rtxon(const std::string& assets) {
     return s;
 }
 
+// A mesh of a sized scene's family: its file, its bounding box and what the family is made of.
+struct FamilyMesh {
+    const char* family;
+    const char* file;
+    Box box;
+};
+
+constexpr FamilyMesh kFamilies[] = {
+    {"buddhas", "buddha/happy_buddha_112k.obj", kBuddha},
+    {"suzannes", "suzanne/suzanne.obj", kSuzanne},
+};
+
+const FamilyMesh& family_mesh(const std::string& family) {
+    for (const FamilyMesh& f : kFamilies)
+        if (family == f.family) return f;
+    return kFamilies[0]; // parse_sized_scene gives only the families above
+}
+
+// N copies of a mesh, each scaled to a height of 1 and turned its own way about +Y, on a k x k
+// grid (k = ceil(sqrt(N))) with a gap of half the mesh's width; the camera looks down at the
+// grid's centre from 0.8 + 0.9 sides in front of its front row and 0.4 + 0.6 sides up, which
+// keeps the whole grid in the 40° field of view at every N.
+json sized(const std::string& assets, const FamilyMesh& f, uint32_t copies) {
+    const Box& b = f.box;
+    const double s = 1.0 / (b.hi[1] - b.lo[1]);
+    const double width = s * std::max(b.hi[0] - b.lo[0], b.hi[2] - b.lo[2]);
+    const double spacing = 1.5 * width;
+    const uint32_t k = uint32_t(std::ceil(std::sqrt(double(copies))));
+    const double extent = spacing * (k - 1) + width; // the grid's side
+    json j;
+    j["camera"] = camera(v3(0, 0.4 + 0.6 * extent, 0.8 + 1.4 * extent), v3(0, 0.3, 0), 40);
+    j["render"] = {{"max_depth", 8}, {"min_depth", 3}};
+    j["materials"] = {{"floor", phong(v3(0.5, 0.5, 0.5))},
+                      {"gold", phong(v3(0.45, 0.32, 0.1), 0.35, 40)}};
+    j["meshes"] = {{"floor", {{"type", "quad"}}}};
+    j["objects"] = json::array({floor_object(0.5 * extent + 2.0)});
+    for (uint32_t i = 0; i < copies; ++i) {
+        const std::string mesh = f.family + std::string("_") + std::to_string(i);
+        j["meshes"][mesh] = obj_mesh(assets, f.file);
+        const double x = spacing * (double(i % k) - 0.5 * (k - 1));
+        const double z = spacing * (double(i / k) - 0.5 * (k - 1));
+        j["objects"].push_back(placed(mesh, "gold", b, s, x, z, double(i * 37 % 90) - 45));
+    }
+    j["lights"] = json::array({sun(v3(-0.3, -1, -0.6), 2.5)});
+    j["environment"] = sky(0.3, 0.35, 0.45);
+    return j;
+}
+
 } // namespace
+
+const std::vector<std::string>& sized_scene_families() {
+    static const std::vector<std::string> names = [] {
+        std::vector<std::string> n;
+        for (const FamilyMesh& f : kFamilies) n.push_back(f.family);
+        return n;
+    }();
+    return names;
+}
+
+std::optional<CatalogueEntry> find_catalogue_entry(const std::string& name) {
+    for (const CatalogueEntry& e : scene_catalogue())
+        if (e.name == name) return e;
+    const std::optional<SizedScene> sized_scene = parse_sized_scene(name);
+    if (!sized_scene) return std::nullopt;
+    const FamilyMesh& f = family_mesh(sized_scene->family);
+    const uint32_t copies = sized_scene->copies;
+    return CatalogueEntry{
+        name,
+        fmt::format("{} distinct copies of {} on a floor", copies, f.file),
+        {f.file},
+        [&f, copies](const std::string& assets) { return sized(assets, f, copies); }};
+}
 
 const std::vector<CatalogueEntry>& scene_catalogue() {
     static const std::vector<CatalogueEntry> entries = {

@@ -14,7 +14,26 @@ namespace tp::bench {
 std::string catalogue_names() {
     std::string names;
     for (const CatalogueEntry& e : scene_catalogue()) names += (names.empty() ? "" : ",") + e.name;
+    for (const std::string& f : sized_scene_families()) names += "," + f + "_N";
     return names;
+}
+
+std::string sized_scene_name(const SizedScene& s) {
+    return s.family + "_" + std::to_string(s.copies);
+}
+
+std::optional<SizedScene> parse_sized_scene(const std::string& name) {
+    for (const std::string& family : sized_scene_families()) {
+        if (name.size() <= family.size() + 1 || name.compare(0, family.size() + 1, family + "_"))
+            continue;
+        const std::string n = name.substr(family.size() + 1);
+        if (n.size() > 5 || n.find_first_not_of("0123456789") != std::string::npos || n[0] == '0')
+            return std::nullopt;
+        const unsigned long copies = std::stoul(n);
+        if (copies > kMaxCopies) return std::nullopt;
+        return SizedScene{family, uint32_t(copies)};
+    }
+    return std::nullopt;
 }
 
 std::string resolve_assets_dir(const std::string& option) {
@@ -26,8 +45,8 @@ std::string resolve_assets_dir(const std::string& option) {
 std::optional<Scene> load_bench_scene(const std::string& name, const std::string& assets_dir,
                                       const std::string& scene_dir, std::string& skip_reason) {
     std::vector<std::string> warnings; // the generated scenes are clean; files say their own
-    for (const CatalogueEntry& e : scene_catalogue()) {
-        if (e.name != name) continue;
+    if (const std::optional<CatalogueEntry> entry = find_catalogue_entry(name)) {
+        const CatalogueEntry& e = *entry;
         if (!e.generate) {
             Scene s = load_scene(name, warnings);
             s.path = name;

@@ -11,6 +11,8 @@
 
 #include <nlohmann/json.hpp>
 
+#include <cstdint>
+#include <functional>
 #include <optional>
 #include <string>
 #include <vector>
@@ -23,10 +25,27 @@ struct CatalogueEntry {
     std::vector<std::string> assets; // files it needs, relative to the assets directory
     // The scene as JSON (docs/scene-format.md) with mesh paths under `assets_dir`; null for
     // a bundled scene, which is loaded by name.
-    nlohmann::json (*generate)(const std::string& assets_dir);
+    std::function<nlohmann::json(const std::string& assets_dir)> generate;
 };
 
 const std::vector<CatalogueEntry>& scene_catalogue();
+
+// The scene-size axis (`bench --sizes --scene-sizes`): `<family>_<N>` is N distinct copies of
+// one mesh (each its own mesh, loaded from the same file: no instancing) in a square grid on a
+// floor, the camera taking in the whole grid. Families: `buddhas` (the 112k-triangle Happy
+// Buddha) and `suzannes` (968 triangles, for tests).
+struct SizedScene {
+    std::string family;
+    uint32_t copies = 0;
+};
+constexpr uint32_t kMaxCopies = 10000;
+const std::vector<std::string>& sized_scene_families();
+std::string sized_scene_name(const SizedScene& s); // "buddhas_30"
+// The family and copies a name gives; nullopt for any other name (also for N outside 1 to
+// kMaxCopies).
+std::optional<SizedScene> parse_sized_scene(const std::string& name);
+// The catalogue's fixed entries, then the sized scenes; nullopt for any other name.
+std::optional<CatalogueEntry> find_catalogue_entry(const std::string& name);
 
 // The catalogue's names, comma-separated (for help and error messages).
 std::string catalogue_names();

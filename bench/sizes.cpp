@@ -63,11 +63,11 @@ json run_sizes(const std::vector<FlatScene>& scenes, const std::vector<ImageSize
     for (uint32_t round = 0; round < rounds; ++round)
         for (size_t i = 0; i < sizes.size(); ++i) {
             FlatScene s = scenes[i];
-            s.spp = kUnlimitedSpp;
+            s.spp = o.sizes_spp > 0 ? o.sizes_spp : kUnlimitedSpp;
             RenderOptions opt;
             opt.seed = o.seed;
             opt.threads = o.threads;
-            opt.time_limit_s = o.sizes_time_s;
+            opt.time_limit_s = o.sizes_spp > 0 ? 0 : o.sizes_time_s;
             stats[i].push_back(render_on(backend, s, opt, o.device).stats);
             if (progress) progress(double(round * sizes.size() + i + 1) / (rounds * sizes.size()));
         }
@@ -90,16 +90,25 @@ json run_sizes(const std::vector<FlatScene>& scenes, const std::vector<ImageSize
             [&](const RenderStats& a, const RenderStats& b) { return mrays(a) < mrays(b); });
         json each = json::array();
         for (const RenderStats& st : stats[i]) each.push_back(mrays(st));
-        run["points"].push_back({{"width", sizes[i].width},
-                                 {"height", sizes[i].height},
-                                 {"pixels", sizes[i].pixels()},
-                                 {"spp", best->spp},
-                                 {"wall_s", best->wall_time_s},
-                                 {"gpu_s", gpu_seconds(best->gpu_time_s)},
-                                 {"samples", best->samples},
-                                 {"rays", rays_json(best->rays)},
-                                 {"mrays_s", number_or_null(mrays(*best))},
-                                 {"rounds_mrays_s", each}});
+        run["points"].push_back(
+            {{"width", sizes[i].width},
+             {"height", sizes[i].height},
+             {"pixels", sizes[i].pixels()},
+             {"spp", best->spp},
+             {"wall_s", best->wall_time_s},
+             {"gpu_s", gpu_seconds(best->gpu_time_s)},
+             {"samples", best->samples},
+             {"rays", rays_json(best->rays)},
+             {"mrays_s", number_or_null(mrays(*best))},
+             {"rounds_mrays_s", each},
+             {"triangles", best->triangles_unique},
+             {"build_s", best->build_time_s},
+             {"build_stages", build_stages_json(*best)},
+             {"upload_s", best->upload_time_s >= 0 ? json(best->upload_time_s) : json(nullptr)},
+             {"accel_bytes", best->accel_bytes},
+             {"device_memory_peak_bytes", best->device_memory_peak_bytes > 0
+                                              ? json(best->device_memory_peak_bytes)
+                                              : json(nullptr)}});
     }
     return run;
 }

@@ -88,6 +88,26 @@ Subcommand add_bench_command(CLI::App& app) {
     c->add_option("--sizes-rounds", o.sizes_rounds, "Sizes: best of this many rounds")
         ->check(CLI::Range(1u, 100u))
         ->capture_default_str();
+    c->add_option("--sizes-spp", o.sizes_spp,
+                  "Sizes: each point renders exactly this many spp instead of --sizes-time")
+        ->check(CLI::Range(1u, 1u << 24));
+    c->add_option("--scene-sizes", o.scene_sizes,
+                  "Sizes: also the scenes of N distinct copies of --scene-sizes-family's mesh on "
+                  "a floor, for each N (e.g. 1,10,30; alone unless --scenes is given)")
+        ->delimiter(',');
+    c->add_option("--scene-sizes-family", o.scene_sizes_family,
+                  "Sizes: the mesh of --scene-sizes: buddhas (112k triangles) or suzannes (968)")
+        ->capture_default_str();
+    c->add_flag("--frame-loop", o.frame_loop,
+                "The viewer's frame loop per Vulkan backend/mode: time per frame and its split "
+                "(trace, resolve, display, host) at --frame-loop-spp samples per frame");
+    c->add_option("--frame-loop-spp", o.frame_loop_spp, "Frame loop: samples per frame")
+        ->delimiter(',')
+        ->check(CLI::Range(1u, 1024u))
+        ->capture_default_str();
+    c->add_option("--frame-loop-frames", o.frame_loop_frames, "Frame loop: timed frames per point")
+        ->check(CLI::Range(1u, 100000u))
+        ->capture_default_str();
     c->add_option("--scenes", o.scenes,
                   "Scenes: " + catalogue_names() + ", or .json/.obj/.gltf/.glb files")
         ->delimiter(',')
@@ -160,6 +180,7 @@ Subcommand add_bench_command(CLI::App& app) {
                 }
                 if (o.quick)
                     apply_quick(o, [&](const std::string& opt) { return c->count(opt) > 0; });
+                if (!o.scene_sizes.empty() && !c->count("--scenes")) o.scenes.clear();
                 return run_bench(o);
             }};
 }

@@ -180,10 +180,7 @@ int run_render(const RenderArgs& a) {
         const std::vector<float>&r = img.channel("R"), &g = img.channel("G"), &b = img.channel("B");
         float stops = 0.0f;
         if (a.exposure == "auto") {
-            std::vector<double> peaks(r.size());
-            for (size_t i = 0; i < peaks.size(); ++i)
-                peaks[i] = double(std::max({r[i], g[i], b[i]}));
-            stops = auto_exposure_stops(peaks);
+            stops = auto_exposure_stops(r, g, b);
             fmt::print(stderr, "twinpath: --png exposure {:+.2f} stops (auto)\n", stops);
         } else {
             stops = float(std::stod(a.exposure));
@@ -225,8 +222,8 @@ Subcommand add_render_command(CLI::App& app) {
     c->add_option("--backend", a->backend, "cpu or vulkan")
         ->check(CLI::IsMember({"cpu", "vulkan"}));
     c->add_option("--bvh", a->bvh,
-                  "Compute mode's BVH layout: binary (default), wide, or auto (chosen per scene "
-                  "from both trees' estimated work per ray, docs/gpu.md)")
+                  "Compute mode's BVH layout: binary, wide, or auto (default: wide where the "
+                  "binary tree's estimated work per ray is long, docs/gpu.md)")
         ->check(CLI::IsMember({"binary", "wide", "auto"}));
     c->add_option("--gpu-invocations", a->gpu_invocations,
                   "Vulkan: render invocations per launch (0: as many as the device keeps "

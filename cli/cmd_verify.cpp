@@ -145,7 +145,7 @@ Subcommand add_verify_command(CLI::App& app) {
                   "False-alarm probability of the whole verdict (default 0.01)");
     c->add_option("--report", a->report,
                   "Write both images, compare's report, the triage and commands.sh into DIR");
-    c->add_option("--bvh", a->bvh, "Compute mode's BVH layout: binary (default), wide, or auto")
+    c->add_option("--bvh", a->bvh, "Compute mode's BVH layout: binary, wide, or auto (default)")
         ->check(CLI::IsMember({"binary", "wide", "auto"}));
     return {c, [a] { return run_verify(*a); }};
 }

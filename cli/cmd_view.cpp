@@ -27,6 +27,10 @@ Subcommand add_view_command(CLI::App& app) {
     c->add_flag("--headless", v.headless, "No window: run the frame loop, report frame times");
     c->add_option("--spp-per-frame", v.progressive.samples_per_frame,
                   "Samples per frame (default: adapt to ~16 ms)");
+    c->add_option("--exposure", v.exposure,
+                  "The display's exposure: STOPS (radiance times 2^STOPS; default 0) or auto (the "
+                  "99th percentile of the first whole pass maps to white); [ and ] change it")
+        ->check(CLI::IsMember({"auto"}) | number_in(-60.0, 60.0));
     c->add_option("--detect", a->detect,
                   "C: the relative bias the live compare finds with probability 0.9 (default 1%)");
     c->add_option("--time-budget", a->time_budget,

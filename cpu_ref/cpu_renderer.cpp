@@ -95,6 +95,7 @@ RenderResult render_cpu(const FlatScene& scene, const RenderOptions& options) {
     const EmbreeAccel accel(scene);
     st.build_time_s = seconds_since(t_build);
     st.accel_bytes = accel.memory_bytes();
+    count_triangles(st, scene);
     const SceneFeatures features = analyze_features(scene);
     st.scene_features = features.names();
     st.feature_mask = render_feature_mask(scene, options.all_features);

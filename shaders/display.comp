@@ -22,8 +22,8 @@ layout(push_constant, scalar) uniform Push {
 };
 
 void main() {
-    uvec2 p = gl_GlobalInvocationID.xy;
-    if (p.x >= display.width || p.y >= display.height) return;
+    uvec2 p = gl_GlobalInvocationID.xy + uvec2(0u, display.row_begin);
+    if (p.x >= display.width || p.y >= display.row_end) return;
     uint i = p.y * display.width + p.x;
     // The film's mean over the pixel's slots, sum / n in double, rounded to float as the EXR
     // stores it.

@@ -12,9 +12,12 @@ const uint DISPLAY_BINDING_ACCUM = 0u;  // PixelAccum[width * height * slots]
 const uint DISPLAY_BINDING_PIXELS = 1u; // uint[width * height], packed 8-bit pixels
 const uint DISPLAY_BINDING_COUNT = 2u;
 
+// A dispatch tone-maps rows [row_begin, row_end) of the image.
 struct DisplayParams {
     uint width;
     uint height;
+    uint row_begin;
+    uint row_end;
     uint slots;  // PixelAccum per pixel, consecutive (one per batch of the Sobol sampler)
     uint bgra;   // 1: the swapchain's format is B8G8R8A8, 0: R8G8B8A8
     float scale; // 2^exposure

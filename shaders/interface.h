@@ -17,34 +17,34 @@ using dvec3 = glm::dvec3;
 #endif
 
 // ---- descriptor set 0 ------------------------------------------------------------------------
-const uint BINDING_PARAMS = 0u;      // RenderParams
-const uint BINDING_MATERIALS = 1u;   // Material[]
-const uint BINDING_INSTANCES = 2u;   // Instance[]
-const uint BINDING_MESHES = 3u;      // MeshInfo[] (bvh_root filled in)
-const uint BINDING_POSITIONS = 4u;   // vec3[]
-const uint BINDING_NORMALS = 5u;     // vec3[], parallel to positions (dummy without normals)
-const uint BINDING_UVS = 6u;         // vec2[], parallel to positions (dummy without uvs)
-const uint BINDING_TRIANGLES = 7u;   // uvec3[], mesh-local vertex indices
-const uint BINDING_LIGHTS = 8u;      // Light[]
-const uint BINDING_LIGHT_TABLE = 9u; // AliasEntry[], light selection
-const uint BINDING_TEXTURES = 10u;   // TextureInfo[]: the images' sizes and formats
+const uint BINDING_PARAMS = 0u;         // RenderParams
+const uint BINDING_MATERIALS = 1u;      // Material[]
+const uint BINDING_INSTANCES = 2u;      // Instance[]
+const uint BINDING_MESHES = 3u;         // MeshInfo[] (bvh_root filled in)
+const uint BINDING_POSITIONS = 4u;      // vec3[]
+const uint BINDING_NORMALS = 5u;        // vec3[], parallel to positions (dummy without normals)
+const uint BINDING_UVS = 6u;            // vec2[], parallel to positions (dummy without uvs)
+const uint BINDING_TRIANGLES = 7u;      // uvec3[], mesh-local vertex indices
+const uint BINDING_LIGHTS = 8u;         // Light[]
+const uint BINDING_LIGHT_TABLE = 9u;    // AliasEntry[], light selection
+const uint BINDING_TEXTURES = 10u;      // TextureInfo[]: the images' sizes and formats
 const uint BINDING_TEXTURE_SLOTS = 11u; // TextureSlot[]: how materials read the images
-const uint BINDING_ENV_TABLE = 12u;  // AliasEntry[], environment-map pixels
-const uint BINDING_UVS1 = 13u;       // vec2[], the second uv set (dummy without one)
-const uint BINDING_TANGENTS = 14u;   // vec4[], normal maps' tangents (dummy without normal maps)
-const uint BINDING_SCENE_COUNT = 15u; // the scene's storage buffers: 0 .. 14
+const uint BINDING_ENV_TABLE = 12u;     // AliasEntry[], environment-map pixels
+const uint BINDING_UVS1 = 13u;          // vec2[], the second uv set (dummy without one)
+const uint BINDING_TANGENTS = 14u;      // vec4[], normal maps' tangents (dummy without normal maps)
+const uint BINDING_SCENE_COUNT = 15u;   // the scene's storage buffers: 0 .. 14
 // The scene's images (TextureInfo[i] is image i), IMAGE_SLOTS sampled images of integer formats
 // read with texelFetch (shaders/scene_access.glsl); slots past the scene's images hold a
 // placeholder (vulkan_rt/render_loop/scene_images.h).
 const uint BINDING_IMAGES = 15u;
-const uint BINDING_BVH_NODES = 16u;  // BvhNode[] (compute mode)
-const uint BINDING_BVH_TRIS = 17u;   // BvhTriangle[] (compute mode)
-const uint BINDING_TLAS = 16u;       // top-level acceleration structure (pipeline mode; no 17)
-const uint BINDING_ACCUM = 18u;      // PixelAccum[width * height]
-const uint BINDING_COUNTERS = 19u;   // uint[COUNTER_WORDS]
-const uint BINDING_DEBUG = 20u;      // DebugHeader + PathVertex[] (debug variant only)
-const uint BINDING_AOV = 21u;        // PixelAov[width * height] (debug variant only)
-const uint BINDING_SAMPLES = 22u;    // vec4[]: one batch's sample estimates, by work item
+const uint BINDING_BVH_NODES = 16u; // BvhNode[] (compute mode)
+const uint BINDING_BVH_TRIS = 17u;  // BvhTriangle[] (compute mode)
+const uint BINDING_TLAS = 16u;      // top-level acceleration structure (pipeline mode; no 17)
+const uint BINDING_ACCUM = 18u;     // PixelAccum[width * height]
+const uint BINDING_COUNTERS = 19u;  // uint[COUNTER_WORDS]
+const uint BINDING_DEBUG = 20u;     // DebugHeader + PathVertex[] (debug variant only)
+const uint BINDING_AOV = 21u;       // PixelAov[width * height] (debug variant only)
+const uint BINDING_SAMPLES = 22u;   // vec4[]: one batch's sample estimates, by work item
 const uint BINDING_COUNT = 23u;
 
 // The images a render binds at most: a fixed-size array read through constant indices (the
@@ -105,6 +105,12 @@ inline uint accum_slots(uint sampler_id) {
     return sampler_id == SAMPLER_SOBOL ? SOBOL_BATCHES : 1u;
 }
 
+// The slots of a pixel that a batch of `sample_count` samples adds to: one per residue class
+// its samples fall in (resolve.comp).
+inline uint resolve_slots(uint sample_count, uint slots) {
+    return min(sample_count, slots);
+}
+
 // ---- work items -------------------------------------------------------------------------------
 // A dispatch's items, in order: sample by sample, and within a sample the rows' pixels in tiles
 // of ITEM_TILE_X x ITEM_TILE_Y (one 32-wide subgroup's camera rays stay as coherent as an 8 x 4
@@ -152,9 +158,10 @@ inline uint pixel_item(uint x, uint y, uint j, uint width, uint row_begin, uint 
 
 // Ray and sample counters, each a 64-bit value as (low, high) 32-bit words so that any Vulkan
 // device can add to them with 32-bit atomics and an explicit carry. COUNTER_TRUNCATED counts
-// the pixel slots that the last dispatch's resolve pass left before their last sample; the host
-// clears it before every dispatch. COUNTER_NEXT_ITEM (one word) is the next item a render
-// invocation takes, also cleared before every dispatch.
+// the pixel slots that the last dispatch's resolve pass left before their last sample; the
+// render launch before that pass clears it. COUNTER_NEXT_ITEM (one word) is the next item a
+// render invocation takes; the resolve pass after the launch clears it for the next one. The
+// host clears all of them when an accumulation starts.
 const uint COUNTER_CAMERA = 0u;
 const uint COUNTER_EXTENSION = 2u;
 const uint COUNTER_SHADOW = 4u;

@@ -77,6 +77,12 @@ uint item_start(uint item, out uvec3 pixel, out uint sample_index, inout RayCoun
 // `invocation` of `invocations`: the invocation's index in the one-dimensional launch and the
 // launch's size.
 void render_items(uint invocation, uint invocations) {
+    // The cut-short count is the resolve pass's, which runs after this launch: it starts again
+    // here, so that the host records no clear (and no barrier for it) before each launch.
+    if (invocation == 0u) {
+        counters[COUNTER_TRUNCATED] = 0u;
+        counters[COUNTER_TRUNCATED + 1u] = 0u;
+    }
     const RayCounts none = RayCounts(0u, 0u, 0u);
     RayCounts total = none;
     RayCounts rays = none; // of the current item

@@ -4,6 +4,9 @@
 // sums, read from the sample buffer in increasing sample order, so that a slot's samples are
 // added in sample order however the render was split into dispatches and whichever invocation
 // traced them. NaN/Inf samples are counted and dropped (docs/design.md, "No silent NaN").
+// A batch of n samples has samples in min(n, slots) residue classes, sample_begin + k for
+// k < n: only those slots have an invocation, the others are left as they are (at one sample
+// a frame, the viewer's, that is one slot of the Sobol sampler's eight).
 //
 // Precision: each sample is added to a double sum and sum of squares, so after n samples the
 // relative rounding error of either is below n * 2^-53 (1e-10 at n = 10^6) and the variance
@@ -29,14 +32,15 @@ const uint RESOLVE_CHUNK = 8u;
 
 void main() {
     uint slots = accum_slots(params.sampler_id);
+    uint batch_slots = resolve_slots(batch.sample_count, slots);
     uint width = params.camera.width;
     uint i = gl_GlobalInvocationID.x;
     uint nan = 0u;
     uint truncated = 0u;
-    if (i < width * (batch.row_end - batch.row_begin) * slots) {
-        uint b = i % slots;
-        uint x = (i / slots) % width;
-        uint y = batch.row_begin + (i / slots) / width;
+    if (i < width * (batch.row_end - batch.row_begin) * batch_slots) {
+        uint b = (batch.sample_begin + i % batch_slots) % slots;
+        uint x = (i / batch_slots) % width;
+        uint y = batch.row_begin + (i / batch_slots) / width;
         uint a = (y * width + x) * slots + b;
         // next_sample is 0 in a fresh accumulator, below a --sample-offset render's first
         // sample; then up to the first index of the slot's class.
@@ -78,5 +82,7 @@ void main() {
         accum[a].count = n;
         accum[a].next_sample = s;
     }
+    // The render launch before this pass took its items; the next one starts from item 0.
+    if (i == 0u) counters[COUNTER_NEXT_ITEM] = 0u;
     counters_flush(0u, 0u, 0u, nan, truncated);
 }

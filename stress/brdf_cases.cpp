@@ -127,11 +127,6 @@ BrdfOutput eval_cpp(const BrdfInput& a) {
     return o;
 }
 
-void count(float x, uint64_t& nan, uint64_t& inf) {
-    nan += std::isnan(x);
-    inf += std::isinf(x);
-}
-
 // The checks, grouped by exponent so that a failure names it.
 std::vector<CaseResult> check(const std::vector<BrdfInput>& in, const std::vector<BrdfOutput>& out,
                               const std::string& backend, const Size& s) {
@@ -154,14 +149,7 @@ std::vector<CaseResult> check(const std::vector<BrdfInput>& in, const std::vecto
                 const size_t i = ci * s.brdf_samples + k;
                 const BrdfInput& a = in[i];
                 const BrdfOutput& o = out[i];
-                for (int ch = 0; ch < 3; ++ch) {
-                    count(o.sample_weight[ch], c.nan, c.inf);
-                    count(o.f[ch], c.nan, c.inf);
-                    count(o.sample_wi[ch], c.nan, c.inf);
-                }
-                count(o.sample_pdf, c.nan, c.inf);
-                count(o.pdf, c.nan, c.inf);
-                c.checked += 2;
+                count_nonfinite(c, o);
                 if (cmax(o.f) > 0.0f && !(o.pdf > 0.0f)) ++support;
                 const double bound =
                     double(a.kd.x + a.ks.x) * (double(ns) + 2.0) / (double(ns) + 1.0);

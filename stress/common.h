@@ -9,6 +9,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 
 namespace tp::stress {
 
@@ -46,6 +47,24 @@ bool render_reference(const Engine& e, const Scene& base, uint32_t seed, const c
 // Two independent renders (different seeds) of the same expectation are called different with
 // probability alpha; the renders are deterministic, so a test is reproducible.
 bool compare_consistent(const Rendered& a, const Rendered& b, double alpha, double& p);
+
+// Counts NaN and Inf among a sampled BSDF's outputs into the case: the value, direction, weight
+// and pdf of the sample and the value and pdf of the evaluated direction, two checks per output.
+template <class BsdfOutput>
+void count_nonfinite(CaseResult& c, const BsdfOutput& o) {
+    auto count = [&c](float x) {
+        c.nan += std::isnan(x);
+        c.inf += std::isinf(x);
+    };
+    for (int ch = 0; ch < 3; ++ch) {
+        count(o.sample_weight[ch]);
+        count(o.f[ch]);
+        count(o.sample_wi[ch]);
+    }
+    count(o.sample_pdf);
+    count(o.pdf);
+    c.checked += 2;
+}
 
 // Appends the render's NaN/Inf count (samples dropped by the engine, and film pixels that are
 // not finite) to the case.

@@ -225,11 +225,6 @@ PbrOutput eval_cpp(const PbrInput& a) {
     return o;
 }
 
-void count(float x, uint64_t& nan, uint64_t& inf) {
-    nan += std::isnan(x);
-    inf += std::isinf(x);
-}
-
 // The weight bound C / P of a sample (module comment), from the lobe probabilities at the
 // shading normal the functions saw.
 double weight_bound(const Material& m, const glm::dvec3& ns, const glm::dvec3& wo,
@@ -294,15 +289,11 @@ CaseResult check_group(const std::vector<Config>& cfg, const std::vector<size_t>
             const size_t i = ci * s.brdf_samples + k;
             const PbrInput& a = in[i];
             const PbrOutput& o = out[i];
+            count_nonfinite(c, o);
             for (int ch = 0; ch < 3; ++ch) {
-                count(o.sample_weight[ch], c.nan, c.inf);
-                count(o.f[ch], c.nan, c.inf);
-                count(o.sample_wi[ch], c.nan, c.inf);
-                count(o.ns[ch], c.nan, c.inf);
+                c.nan += std::isnan(o.ns[ch]);
+                c.inf += std::isinf(o.ns[ch]);
             }
-            count(o.sample_pdf, c.nan, c.inf);
-            count(o.pdf, c.nan, c.inf);
-            c.checked += 2;
             const glm::dvec3 ns(o.ns), wo(a.wo);
             if (!(std::abs(glm::length(ns) - 1.0) < 1e-5) || !(glm::dot(ns, wo) > 0.0)) {
                 if (bad_normal++ == 0)
@@ -388,7 +379,7 @@ std::vector<CaseResult> run_cpp(const Size& s, bool maps) {
     std::vector<PbrOutput> out(in.size());
     for (size_t i = 0; i < in.size(); ++i) out[i] = eval_cpp(in[i]);
     std::vector<CaseResult> r = check(cfg, in, out, "c++", s, maps);
-    const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double dt = seconds_since(t0);
     for (CaseResult& c : r) c.seconds = dt / double(r.size());
     return r;
 }
@@ -402,7 +393,7 @@ std::vector<CaseResult> run_glsl(const VulkanContext& ctx, const Size& s, bool m
         ctx, tp_spirv_stress_pbr_comp, sizeof(tp_spirv_stress_pbr_comp), {bytes_of(in)},
         {in.size() * sizeof(PbrOutput)}, &count, sizeof(count), (count + 63) / 64);
     std::vector<CaseResult> r = check(cfg, in, as_vector<PbrOutput>(bytes[0]), "glsl", s, maps);
-    const double dt = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
+    const double dt = seconds_since(t0);
     for (CaseResult& c : r) {
         c.mode = ctx.info().name;
         c.seconds = dt / double(r.size());

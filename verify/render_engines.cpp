@@ -88,7 +88,7 @@ EngineRun VulkanEngine::render(const EngineRequest& request) {
         args.push_back("--device");
         args.push_back(vk_.device);
     }
-    if (vk_.bvh != BvhLayout::binary) {
+    if (vk_.bvh != VulkanOptions{}.bvh) {
         args.push_back("--bvh");
         args.push_back(bvh_layout_name(vk_.bvh));
     }

@@ -6,11 +6,28 @@
 #include <backends/imgui_impl_vulkan.h>
 #include <imgui.h>
 
+#include <fmt/core.h>
+
+#include <algorithm>
+
 namespace tp {
 namespace {
 
 void check(VkResult r) {
     vk_check(r, "drawing the overlay");
+}
+
+// Below this window size the full panel (title, device, features, keys: some 360 x 140 pixels
+// in ImGui's 13-pixel font) would cover most of the image: the panel is the compact one.
+constexpr float kFullPanelMinWidth = 480, kFullPanelMinHeight = 360;
+constexpr float kCompactFontScale = 0.8f;
+// The panel's margin from the window's edges, and the most of the window's height it takes.
+constexpr float kMargin = 8;
+constexpr float kMaxHeightShare = 0.4f;
+
+std::string spp_text(const OverlayText& t) {
+    if (t.pass_fraction <= 0) return fmt::format("{} spp", t.spp);
+    return fmt::format("{} spp (+{:.0f}%)", t.spp, 100.0 * t.pass_fraction);
 }
 
 } // namespace
@@ -65,17 +82,35 @@ void Overlay::build(const OverlayText& t, bool visible) {
     ImGui_ImplGlfw_NewFrame();
     ImGui::NewFrame();
     if (visible) {
-        ImGui::SetNextWindowPos(ImVec2(8, 8), ImGuiCond_Always);
+        const ImVec2 window = ImGui::GetIO().DisplaySize;
+        const bool full = window.x >= kFullPanelMinWidth && window.y >= kFullPanelMinHeight;
+        const float max_width = std::max(window.x - 2 * kMargin, 1.0f);
+        ImGui::SetNextWindowPos(ImVec2(kMargin, kMargin), ImGuiCond_Always);
+        ImGui::SetNextWindowSizeConstraints(ImVec2(0, 0),
+                                            ImVec2(max_width, kMaxHeightShare * window.y));
         ImGui::SetNextWindowBgAlpha(0.6f);
-        ImGui::Begin("twinpath", nullptr,
-                     ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
-                         ImGuiWindowFlags_NoSavedSettings);
-        ImGui::Text("%s", t.scene.c_str());
-        ImGui::Text("%u spp   %.1f ms/frame   %.1f Mrays/s", t.spp, t.frame_ms, t.mrays_per_s);
-        ImGui::Text("%s (%s)", t.device.c_str(), t.mode.c_str());
-        ImGui::TextWrapped("features: %s", t.features.c_str());
+        ImGuiWindowFlags flags = ImGuiWindowFlags_AlwaysAutoResize | ImGuiWindowFlags_NoMove |
+                                 ImGuiWindowFlags_NoSavedSettings;
+        if (!full) flags |= ImGuiWindowFlags_NoTitleBar;
+        ImGui::Begin("twinpath", nullptr, flags);
+        if (!full) ImGui::SetWindowFontScale(kCompactFontScale);
+        // Lines wrap at the panel's widest, not at an auto-sized panel's last width.
+        ImGui::PushTextWrapPos(max_width - 2 * ImGui::GetStyle().WindowPadding.x);
+        const std::string spp = spp_text(t);
+        if (full) {
+            ImGui::TextUnformatted(t.scene.c_str());
+            ImGui::TextWrapped("%s   %.1f ms/frame   %.1f Mrays/s   exposure %+.1f", spp.c_str(),
+                               t.frame_ms, t.mrays_per_s, t.exposure);
+            ImGui::TextWrapped("%s (%s)", t.device.c_str(), t.mode.c_str());
+            ImGui::TextWrapped("features: %s", t.features.c_str());
+        } else {
+            ImGui::TextWrapped("%s  %.0f ms", spp.c_str(), t.frame_ms);
+        }
         for (const std::string& line : t.status) ImGui::TextWrapped("%s", line.c_str());
-        ImGui::TextDisabled("P flags  Ctrl+S save  C compare  Esc leave  H hide");
+        if (full)
+            ImGui::TextDisabled(
+                "P flags  Ctrl+S save  C compare  Esc leave  H hide  [ ] X exposure");
+        ImGui::PopTextWrapPos();
         ImGui::End();
     }
     ImGui::Render();

@@ -1,6 +1,8 @@
 // The viewer's overlay (Dear ImGui, Debian's libimgui-dev, with its GLFW and Vulkan back ends):
 // a panel with what the accumulation has done and on what, drawn inside the Presenter's render
-// pass over the displayed image.
+// pass over the displayed image. The panel keeps to the top of the window, within its width and
+// a share of its height; in a small window it shows only the samples, the frame time and the
+// status lines, in a smaller font, so that the image (or the compare map) stays in view.
 #pragma once
 
 #include "view/window.h"
@@ -14,8 +16,10 @@ namespace tp {
 
 struct OverlayText {
     uint32_t spp = 0;
+    double pass_fraction = 0; // the share of the rows that have one sample more than spp
     double frame_ms = 0;
     double mrays_per_s = 0;
+    float exposure = 0; // the display's exposure in stops
     std::string device, mode, scene, features;
     std::vector<std::string> status; // compare and path-diff results, saved files
 };

@@ -28,7 +28,7 @@ std::vector<ScriptedAction> read_view_script(const std::string& path) {
             std::string k;
             ok = bool(words >> k) &&
                  (k == "Esc" ||
-                  (k.size() == 1 && std::string("PSCHwasdqe").find(k[0]) != std::string::npos));
+                  (k.size() == 1 && std::string("PSCHX[]wasdqe").find(k[0]) != std::string::npos));
             a.kind = ViewAction::Key;
             a.key = k == "Esc" ? char(27) : k[0];
         } else if (verb == "orbit" || verb == "pan" || verb == "click") {

@@ -2,8 +2,8 @@
 // a --script file that replays them at given frames, for tests and demos.
 //
 // Script format, one action per line, '#' starts a comment:
-//   FRAME key K          press key K: P, S (save), C, H, Esc, or a fly key w a s d q e (one
-//                        frame's worth of holding it)
+//   FRAME key K          press key K: P, S (save), C, H, X, [, ], Esc, or a fly key
+//                        w a s d q e (one frame's worth of holding it)
 //   FRAME orbit DX DY    drag with the left button by DX, DY pixels
 //   FRAME pan DX DY      drag with the right button by DX, DY pixels
 //   FRAME wheel STEPS    scroll (dolly); `fov STEPS` with the modifier held

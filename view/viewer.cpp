@@ -1,5 +1,6 @@
 #include "view/viewer.h"
 
+#include "image/exposure.h"
 #include "image/png_io.h"
 #include "render/render_header.h"
 #include "render/sampler.h"
@@ -37,6 +38,8 @@ constexpr double kOrbitPerPixel = 2.0;
 constexpr double kDollyPerNotch = 0.9;
 constexpr double kFovPerNotch = 2.0;
 constexpr double kFlyStep = 0.02;
+// [ and ] change the display's exposure by half a stop (a factor sqrt 2).
+constexpr float kExposureStep = 0.5f;
 // The live compare's two-sample test estimates each pixel's variance from its own samples (none
 // from one sample) and is calibrated from 16 spp on (docs/compare.md).
 constexpr uint32_t kMinCompareSpp = 16;
@@ -54,20 +57,46 @@ std::string free_name(const std::string& base) {
     }
 }
 
+// The frames' wall times and, per frame, the GPU seconds of its passes (trace, resolve,
+// display); the rest of a frame's wall time is the host's: recording, submitting and waiting,
+// the counters' read-back and, in a window, presentation.
 struct FrameTimes {
     std::vector<double> seconds;
+    BatchSplit gpu; // summed over the frames
     uint64_t rays = 0;
-    std::string report(uint32_t spp) const {
+
+    void add(double wall, const BatchSplit& split, uint64_t frame_rays) {
+        seconds.push_back(wall);
+        gpu.trace += split.trace;
+        gpu.resolve += split.resolve;
+        gpu.after += split.after;
+        rays += frame_rays;
+    }
+
+    // `pass_fraction`: the rows that have one more sample than `spp` (frames in bands).
+    std::string report(uint32_t spp, double pass_fraction) const {
         if (seconds.empty()) return "no frames";
         std::vector<double> s = seconds;
         std::sort(s.begin(), s.end());
         const double total = std::accumulate(s.begin(), s.end(), 0.0);
-        const double mean = total / double(s.size());
-        return fmt::format("{} frames: mean {:.3f} ms, median {:.3f} ms, p95 {:.3f} ms, {:.1f} "
-                           "frames/s; {} spp; {:.1f} Mrays/s",
-                           s.size(), 1e3 * mean, 1e3 * s[s.size() / 2],
-                           1e3 * s[std::min(s.size() - 1, s.size() * 95 / 100)], 1.0 / mean, spp,
-                           total > 0 ? double(rays) / total * 1e-6 : 0.0);
+        const double n = double(s.size());
+        const double mean = total / n;
+        std::string text = fmt::format(
+            "{} frames: mean {:.3f} ms, median {:.3f} ms, p95 {:.3f} ms, {:.1f} frames/s; {} spp; "
+            "{:.1f} Mrays/s",
+            s.size(), 1e3 * mean, 1e3 * s[s.size() / 2],
+            1e3 * s[std::min(s.size() - 1, s.size() * 95 / 100)], 1.0 / mean, spp,
+            total > 0 ? double(rays) / total * 1e-6 : 0.0);
+        if (pass_fraction > 0)
+            text += fmt::format("; frames are bands of rows: {:.0f}% of the image has {} spp",
+                                100.0 * pass_fraction, spp + 1);
+        const double gpu_total = gpu.trace + gpu.resolve + gpu.after;
+        if (gpu_total > 0)
+            text += fmt::format("; per frame: trace {:.3f} ms, resolve {:.3f} ms, display {:.3f} "
+                                "ms (GPU), host {:.3f} ms",
+                                1e3 * gpu.trace / n, 1e3 * gpu.resolve / n, 1e3 * gpu.after / n,
+                                1e3 * (total - gpu_total) / n);
+        return text;
     }
 };
 
@@ -85,6 +114,9 @@ class Viewer {
         const std::vector<std::string> features = analyze_features(scene).names();
         for (const std::string& f : features)
             text_.features += (text_.features.empty() ? "" : ", ") + f;
+        auto_exposure_ = o.exposure == "auto";
+        if (!auto_exposure_) text_.exposure = std::stof(o.exposure);
+        renderer_.set_display(bgra, text_.exposure);
     }
 
     // Runs the loop until --frames or the window closes; `window` null: headless.
@@ -111,11 +143,13 @@ class Viewer {
             const auto t0 = std::chrono::steady_clock::now();
             const uint64_t rays_before = renderer_.rays();
             const bool rendered = renderer_.frame();
-            renderer_.update_display(bgra_, 0.0f);
+            // --exposure auto: from the first whole pass, the earliest image of every pixel.
+            if (auto_exposure_ && renderer_.spp() >= 1) set_auto_exposure();
             const bool last = o_.frames > 0 && frame + 1 == o_.frames;
             if (window_engine_) window_engine_->serve(renderer_, rendered && !last);
             if (presenter) {
                 text_.spp = renderer_.spp();
+                text_.pass_fraction = renderer_.pass_fraction();
                 overlay->build(text_, show_overlay_);
                 std::vector<uint8_t> capture;
                 const Buffer& shown = picture_ ? *picture_ : renderer_.display_pixels();
@@ -130,8 +164,7 @@ class Viewer {
             }
             const double seconds = seconds_since(t0);
             if (rendered) {
-                times_.seconds.push_back(seconds);
-                times_.rays += renderer_.rays() - rays_before;
+                times_.add(seconds, renderer_.frame_split(), renderer_.rays() - rays_before);
                 text_.frame_ms = 1e3 * seconds;
                 text_.mrays_per_s = double(renderer_.rays() - rays_before) / seconds * 1e-6;
             } else if (window) {
@@ -146,7 +179,9 @@ class Viewer {
             std::this_thread::sleep_for(std::chrono::milliseconds(20));
             poll_jobs();
         }
-        if (o_.headless) fmt::print("view --headless: {}\n", times_.report(renderer_.spp()));
+        if (o_.headless)
+            fmt::print("view --headless: {}\n",
+                       times_.report(renderer_.spp(), renderer_.pass_fraction()));
         return 0;
     }
 
@@ -218,6 +253,14 @@ class Viewer {
         case 'C':
             start_compare();
             break;
+        case '[':
+        case ']':
+            text_.exposure += k == '[' ? -kExposureStep : kExposureStep;
+            renderer_.set_display(bgra_, text_.exposure);
+            break;
+        case 'X':
+            set_auto_exposure();
+            break;
         case 27:
             picture_.reset();
             status({});
@@ -246,9 +289,21 @@ class Viewer {
         opt.sampler = o_.progressive.sampler;
         write_exr(base + ".exr", render_exr(r, current_scene(), opt));
         const ExrImage img = r.film.to_exr();
-        write_png(base + ".png", int(img.width), int(img.height),
-                  tonemap_srgb8(img.channel("R"), img.channel("G"), img.channel("B"), 0.0f));
+        write_png(
+            base + ".png", int(img.width), int(img.height),
+            tonemap_srgb8(img.channel("R"), img.channel("G"), img.channel("B"), text_.exposure));
         status({fmt::format("saved {}.exr and {}.png ({} spp)", base, base, r.stats.spp)});
+    }
+
+    // The exposure that maps the accumulation's 99th percentile to white (image/exposure.h), as
+    // render --exposure auto does.
+    void set_auto_exposure() {
+        auto_exposure_ = false;
+        const ExrImage img = renderer_.result().film.to_exr();
+        text_.exposure = auto_exposure_stops(img.channel("R"), img.channel("G"), img.channel("B"));
+        renderer_.set_display(bgra_, text_.exposure);
+        status({fmt::format("exposure {:+.2f} stops (auto, from {} spp)", text_.exposure,
+                            renderer_.spp())});
     }
 
     void start_compare() {
@@ -322,6 +377,7 @@ class Viewer {
     OverlayText text_;
     FrameTimes times_;
     bool restart_ = false, show_overlay_ = true;
+    bool auto_exposure_ = false; // --exposure auto, until the first whole pass
     std::unique_ptr<Buffer> picture_;
     std::unique_ptr<CpuJob> compare_job_, pathdiff_job_;
     // The live compare's side of the window (served every frame) and its stop (a camera move).

@@ -25,6 +25,7 @@ struct ViewOptions {
     std::string screenshot;         // --screenshot: the last frame's window content as PNG
     std::string script;             // --script: timed actions (view_input.h)
     bool headless = false;          // --headless: no window, frame times on stdout
+    std::string exposure = "0";     // --exposure STOPS|auto of the display
     uint32_t threads = 0;           // CPU threads of the live compare and the path replay
     PlanRequest verify;             // C: --detect and --time-budget (verify/plan.h)
 };

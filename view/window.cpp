@@ -131,12 +131,15 @@ void ViewWindow::on_scroll(GLFWwindow* w, double, double dy) {
 void ViewWindow::on_key(GLFWwindow* w, int key, int, int action, int mods) {
     auto* self = static_cast<ViewWindow*>(glfwGetWindowUserPointer(w));
     if (action != GLFW_PRESS) return;
-    // Ctrl+S saves (plain S flies backwards); P, C, H; Esc.
+    // Ctrl+S saves (plain S flies backwards); P, C, H; X, [ and ] set the exposure; Esc.
     char k = 0;
     if (key == GLFW_KEY_ESCAPE) k = 27;
     if (key == GLFW_KEY_P || key == GLFW_KEY_C || key == GLFW_KEY_H)
         k = char('A' + key - GLFW_KEY_A);
     if (key == GLFW_KEY_S && (mods & GLFW_MOD_CONTROL)) k = 'S';
+    if (key == GLFW_KEY_X) k = 'X';
+    if (key == GLFW_KEY_LEFT_BRACKET) k = '[';
+    if (key == GLFW_KEY_RIGHT_BRACKET) k = ']';
     if (k) self->pending_.push_back({ViewAction::Key, k, 0, 0});
 }
 

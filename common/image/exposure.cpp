@@ -15,4 +15,11 @@ float auto_exposure_stops(std::vector<double>& peaks) {
     return float(std::clamp(-std::log2(p99), -30.0, 30.0));
 }
 
+float auto_exposure_stops(const std::vector<float>& r, const std::vector<float>& g,
+                          const std::vector<float>& b) {
+    std::vector<double> peaks(r.size());
+    for (size_t i = 0; i < peaks.size(); ++i) peaks[i] = double(std::max({r[i], g[i], b[i]}));
+    return auto_exposure_stops(peaks);
+}
+
 } // namespace tp

@@ -11,4 +11,8 @@ namespace tp {
 // not finite (a black image), clamped to +-30 stops.
 float auto_exposure_stops(std::vector<double>& peaks);
 
+// The same for an image given as its R, G and B planes (equal sizes).
+float auto_exposure_stops(const std::vector<float>& r, const std::vector<float>& g,
+                          const std::vector<float>& b);
+
 } // namespace tp

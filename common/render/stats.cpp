@@ -1,5 +1,6 @@
 #include "render/stats.h"
 
+#include "scene/flatten.h"
 #include "util/error.h"
 #include "util/json_file.h"
 
@@ -69,6 +70,14 @@ nlohmann::json pipeline_stats_json(const RenderStats& s) {
     return j;
 }
 
+void count_triangles(RenderStats& s, const FlatScene& scene) {
+    s.triangles_unique = 0;
+    s.triangles_instanced = 0;
+    for (const MeshInfo& m : scene.meshes) s.triangles_unique += m.triangle_count;
+    for (const Instance& i : scene.instances)
+        s.triangles_instanced += scene.meshes[i.mesh].triangle_count;
+}
+
 void write_stats_json(const std::string& path, const RenderStats& s) {
     nlohmann::json j;
     j["scene"] = s.scene;
@@ -83,6 +92,7 @@ void write_stats_json(const std::string& path, const RenderStats& s) {
     j["threads"] = s.threads;
     j["wall_time_s"] = s.wall_time_s;
     j["build_time_s"] = s.build_time_s;
+    j["upload_time_s"] = s.upload_time_s >= 0 ? nlohmann::json(s.upload_time_s) : nullptr;
     j["gpu_time_s"] = s.gpu_time_s >= 0 ? nlohmann::json(s.gpu_time_s) : nlohmann::json(nullptr);
     j["rays"] = {{"camera", s.rays.camera},
                  {"extension", s.rays.extension},
@@ -92,6 +102,10 @@ void write_stats_json(const std::string& path, const RenderStats& s) {
     j["samples"] = s.samples;
     j["nan_samples"] = s.nan_samples;
     j["accel_bytes"] = s.accel_bytes;
+    j["device_memory_peak_bytes"] =
+        s.device_memory_peak_bytes > 0 ? nlohmann::json(s.device_memory_peak_bytes) : nullptr;
+    j["triangles_unique"] = s.triangles_unique;
+    j["triangles_instanced"] = s.triangles_instanced;
     j["features"] = {
         {"scene", s.scene_features}, {"variant", s.feature_variant}, {"mask", s.feature_mask}};
     if (s.pipeline) j["pipeline_creation"] = creation_json(*s.pipeline);

@@ -94,10 +94,17 @@ struct RenderStats {
     double wall_time_s = 0;  // rendering only, scene loading and acceleration build excluded
     double build_time_s = 0; // acceleration structure build
     double gpu_time_s = -1;  // from timestamp queries; < 0 when not measured
+    // Vulkan: the scene (and compute mode's BVH) copied to the device; < 0 for the CPU.
+    double upload_time_s = -1;
     RayCounts rays;
     uint64_t samples = 0;
     uint64_t nan_samples = 0; // NaN/Inf samples, dropped from the film
     uint64_t accel_bytes = 0; // BVH / acceleration structure memory
+    // Vulkan: the most device memory held at once from the mode's set-up to the film's read-back
+    // (vulkan_rt/device/memory_tally.h); 0 for the CPU.
+    uint64_t device_memory_peak_bytes = 0;
+    // The scene's triangles: stored (each mesh once) and rendered (each mesh once per instance).
+    uint64_t triangles_unique = 0, triangles_instanced = 0;
     // Scene features (scene/features.h): what the scene uses, and the variant of the path loop
     // that rendered it ("scene": specialized to those features; "all": every feature compiled in).
     std::vector<std::string> scene_features;
@@ -114,6 +121,10 @@ struct RenderStats {
         return wall_time_s > 0 ? double(rays.total()) / wall_time_s : 0.0;
     }
 };
+
+struct FlatScene;
+// Sets triangles_unique and triangles_instanced from the scene rendered.
+void count_triangles(RenderStats& s, const FlatScene& scene);
 
 // `--stats`: everything above but the pipeline's executables; of the pipeline report only the
 // creation feedback (`pipeline_creation`).

@@ -4,7 +4,7 @@
 #include "scene/generators.h"
 #include "scene/json_material.h"
 #include "scene/json_reader.h"
-#include "scene/obj_loader.h"
+#include "scene/obj_files.h"
 #include "scene/tangents.h"
 #include "shared/math.h"
 #include "util/error.h"
@@ -120,12 +120,29 @@ Mesh inline_mesh(const Reader& r, const json& j, const std::string& field) {
     return m;
 }
 
+// The OBJ files that well-formed mesh entries name, to be read at once before the entries are
+// read in order; an entry that names none well (no such file, a malformed field) is left to
+// read_mesh, which reports it in its turn before it would look the file up.
+std::vector<std::string> obj_paths(const Reader& r, const json& meshes) {
+    std::vector<std::string> paths;
+    for (const auto& [name, j] : meshes.items()) {
+        if (!j.is_object() || !j.contains("type") || j["type"] != "obj" || !j.contains("file"))
+            continue;
+        try {
+            paths.push_back(r.file_path(j["file"], "meshes." + name + ".file").string());
+        } catch (const InputError&) {
+        }
+    }
+    return paths;
+}
+
 // A mesh entry: either one mesh (generated or inline) or the parts of an OBJ file.
 struct MeshRef {
     std::vector<ObjPart> parts; // material NO_INDEX: the object must name one
 };
 
 MeshRef read_mesh(const Reader& r, const json& j, const std::string& field, Scene& scene,
+                  const std::map<std::string, ObjFile>& obj_files,
                   std::vector<std::string>& warnings) {
     const std::string type = r.string(r.required(j, field, "type"), field + ".type");
     MeshRef ref;
@@ -134,8 +151,7 @@ MeshRef read_mesh(const Reader& r, const json& j, const std::string& field, Scen
         r.keys(j, field, {"type", "file"});
         const fs::path file = r.file_path(r.required(j, field, "file"), field + ".file");
         // Faces without usemtl get NO_INDEX; the object must then give a material.
-        const uint32_t unset = NO_INDEX;
-        ref.parts = load_obj(file.string(), scene, unset, warnings);
+        ref.parts = append_obj(obj_files.at(file.string()), scene, NO_INDEX, warnings);
         return ref;
     } else if (type == "sphere") {
         r.keys(j, field, {"type", "subdivisions", "inward", "smooth"});
@@ -273,9 +289,11 @@ Scene load_json_scene(const std::string& path, std::vector<std::string>& warning
     std::map<std::string, MeshRef> meshes;
     if (root.contains("meshes")) {
         if (!root["meshes"].is_object()) r.fail("meshes", "expected an object of named meshes");
+        const std::map<std::string, ObjFile> obj_files =
+            read_obj_files(obj_paths(r, root["meshes"]), NO_INDEX);
         for (const auto& [name, j] : root["meshes"].items()) {
             if (!j.is_object()) r.fail("meshes." + name, "expected an object");
-            meshes[name] = read_mesh(r, j, "meshes." + name, scene, warnings);
+            meshes[name] = read_mesh(r, j, "meshes." + name, scene, obj_files, warnings);
         }
     }
 

@@ -45,8 +45,8 @@ SurfacePoint scene_surface(TraceHit h) {
         (m.flags & MESH_HAS_NORMALS) != 0u) {
         vec4 tg = barycentric_mix4(tangents[base + t.x], tangents[base + t.y], tangents[base + t.z],
                                    h.bary);
-        vec3 n = barycentric_mix3(normals[base + t.x], normals[base + t.y], normals[base + t.z],
-                                  h.bary);
+        vec3 n =
+            barycentric_mix3(normals[base + t.x], normals[base + t.y], normals[base + t.z], h.bary);
         surface_set_tangent_frame(sp, inst, n, tg);
     }
     return sp;
@@ -59,14 +59,25 @@ vec4 scene_texel_linear(uint image, TextureInfo info, uint i, bool srgb) {
     return srgb && info.format != TEXEL_RGBA32F ? srgb_to_linear4(c) : c;
 }
 
-// Image `image` at image coordinates st, bilinear, under the wrap modes of s and t.
-vec4 scene_image_bilinear(uint image, vec2 st, uint wrap_s, uint wrap_t, bool srgb) {
+// Texel k (0-3) of a bilinear footprint: i00, i10, i01, i11.
+uint footprint_texel(TexelFootprint fp, uint k) {
+    return k == 0u ? fp.i00 : k == 1u ? fp.i10 : k == 2u ? fp.i01 : fp.i11;
+}
+
+// Image `image` at image coordinates st under the wrap modes of s and t: bilinear, or its
+// nearest texel. The texels are read at one call of scene_texel in a loop: a shader compiler
+// that inlines every call before it folds the specialization constants (Mesa's, which then
+// removes the switch over the scene's images of shaders/scene_access.glsl) copies that switch
+// once per call site, so each site costs compile time whether or not the scene has images.
+vec4 scene_image_lookup(uint image, vec2 st, uint wrap_s, uint wrap_t, bool srgb, bool nearest) {
     TextureInfo info = textures[image];
     TexelFootprint fp = texture_footprint(st, info.width, info.height, wrap_s, wrap_t);
-    return texture_bilerp(scene_texel_linear(image, info, fp.i00, srgb),
-                          scene_texel_linear(image, info, fp.i10, srgb),
-                          scene_texel_linear(image, info, fp.i01, srgb),
-                          scene_texel_linear(image, info, fp.i11, srgb), fp.f);
+    if (nearest) fp.i00 = texture_nearest(st, info.width, info.height, wrap_s, wrap_t);
+    vec4 t[4];
+    uint n = nearest ? 1u : 4u;
+    for (uint k = 0u; k < n; ++k)
+        t[k] = scene_texel_linear(image, info, footprint_texel(fp, k), srgb);
+    return nearest ? t[0] : texture_bilerp(t[0], t[1], t[2], t[3], fp.f);
 }
 
 // Texture slot `slot` (TextureSlot) at a surface with uv sets uv0 and uv1, in linear RGBA.
@@ -74,47 +85,52 @@ vec4 scene_texture(int slot, vec2 uv0, vec2 uv1) {
     TextureSlot ts = texture_slots[slot];
     vec3 uv = vec3((ts.sampling & SLOT_UV1) != 0u ? uv1 : uv0, 1.0f);
     vec2 st = vec2(dot(ts.transform_s, uv), dot(ts.transform_t, uv));
-    uint wrap_s = ts.sampling & 3u;
-    uint wrap_t = (ts.sampling >> SLOT_WRAP_T_SHIFT) & 3u;
-    bool srgb = (ts.sampling & SLOT_SRGB) != 0u;
-    if ((ts.sampling & SLOT_NEAREST) == 0u)
-        return scene_image_bilinear(ts.image, st, wrap_s, wrap_t, srgb);
-    TextureInfo info = textures[ts.image];
-    return scene_texel_linear(ts.image, info,
-                              texture_nearest(st, info.width, info.height, wrap_s, wrap_t), srgb);
+    return scene_image_lookup(ts.image, st, ts.sampling & 3u,
+                              (ts.sampling >> SLOT_WRAP_T_SHIFT) & 3u,
+                              (ts.sampling & SLOT_SRGB) != 0u, (ts.sampling & SLOT_NEAREST) != 0u);
+}
+
+// A material's texture slot k (MATERIAL_TEXTURE_SLOTS, types.h).
+int material_texture(Material m, uint k) {
+    if (k == 0u) return m.kd_texture;
+    if (k == 1u) return m.metallic_roughness_texture;
+    if (k == 2u) return m.emissive_texture;
+    if (k == 3u) return m.transmission_texture;
+    if (k == 4u) return m.specular_texture;
+    if (k == 5u) return m.specular_color_texture;
+    return m.normal_texture;
 }
 
 // The instance's material at surface point sp with its textures applied, and sp's shading
-// normal bent by the material's normal map (surface.h, surface_apply_normal_map).
+// normal bent by the material's normal map (surface.h, surface_apply_normal_map). Only the base
+// colour applies to a material that is not glTF's. One lookup in a loop over the slots, for
+// the reason scene_image_lookup gives.
 Material scene_material(uint instance, INOUT(SurfacePoint) sp) {
     Material m = materials[instances[instance].material];
     if (!feature_on(scene_features, FEATURE_TEXTURES)) return m;
-    if (m.kd_texture != NO_TEXTURE) {
-        vec4 c = scene_texture(m.kd_texture, sp.uv, sp.uv1);
-        m.kd *= vec3(c.x, c.y, c.z);
-        m.alpha *= c.w;
-    }
-    if (!feature_on(scene_features, FEATURE_PBR) || m.type != MATERIAL_PBR) return m;
-    if (m.metallic_roughness_texture != NO_TEXTURE) {
-        vec4 c = scene_texture(m.metallic_roughness_texture, sp.uv, sp.uv1);
-        m.roughness *= c.y;
-        m.metallic *= c.z;
-    }
-    if (m.emissive_texture != NO_TEXTURE) {
-        vec4 c = scene_texture(m.emissive_texture, sp.uv, sp.uv1);
-        m.ke *= vec3(c.x, c.y, c.z);
-    }
-    if (m.transmission_texture != NO_TEXTURE)
-        m.transmission *= scene_texture(m.transmission_texture, sp.uv, sp.uv1).x;
-    if (m.specular_texture != NO_TEXTURE)
-        m.specular *= scene_texture(m.specular_texture, sp.uv, sp.uv1).w;
-    if (m.specular_color_texture != NO_TEXTURE) {
-        vec4 c = scene_texture(m.specular_color_texture, sp.uv, sp.uv1);
-        m.ks *= vec3(c.x, c.y, c.z);
-    }
-    if (feature_on(scene_features, FEATURE_NORMAL_MAPS) && m.normal_texture != NO_TEXTURE) {
-        vec4 c = scene_texture(m.normal_texture, sp.uv, sp.uv1);
-        surface_apply_normal_map(sp, vec3(c.x, c.y, c.z), m.normal_scale);
+    bool pbr = feature_on(scene_features, FEATURE_PBR) && m.type == MATERIAL_PBR;
+    for (uint k = 0u; k < MATERIAL_TEXTURE_SLOTS; ++k) {
+        int slot = material_texture(m, k);
+        if (slot == NO_TEXTURE || (k > 0u && !pbr)) continue;
+        if (k == 6u && !feature_on(scene_features, FEATURE_NORMAL_MAPS)) continue;
+        vec4 c = scene_texture(slot, sp.uv, sp.uv1);
+        if (k == 0u) {
+            m.kd *= vec3(c.x, c.y, c.z);
+            m.alpha *= c.w;
+        } else if (k == 1u) {
+            m.roughness *= c.y;
+            m.metallic *= c.z;
+        } else if (k == 2u) {
+            m.ke *= vec3(c.x, c.y, c.z);
+        } else if (k == 3u) {
+            m.transmission *= c.x;
+        } else if (k == 4u) {
+            m.specular *= c.w;
+        } else if (k == 5u) {
+            m.ks *= vec3(c.x, c.y, c.z);
+        } else {
+            surface_apply_normal_map(sp, vec3(c.x, c.y, c.z), m.normal_scale);
+        }
     }
     return m;
 }
@@ -170,9 +186,9 @@ vec3 scene_environment_radiance(vec3 d) {
     Light env = lights[params.env_light];
     if (!feature_on(scene_features, FEATURE_ENV_MAP) || params.env_texture == NO_TEXTURE)
         return env.value;
-    vec4 c = scene_image_bilinear(uint(params.env_texture),
-                                  environment_map_coords(d, params.env_rotation), SLOT_WRAP_REPEAT,
-                                  SLOT_WRAP_CLAMP, true);
+    vec4 c =
+        scene_image_lookup(uint(params.env_texture), environment_map_coords(d, params.env_rotation),
+                           SLOT_WRAP_REPEAT, SLOT_WRAP_CLAMP, true, false);
     return env.value * vec3(c.x, c.y, c.z);
 }
 
@@ -196,8 +212,9 @@ LightSample scene_sample_light(uint i, vec3 p, vec2 u, uint env_slot_bits, float
         params.env_texture == NO_TEXTURE) {
         LightSample ls = sample_light_in(scene_features, l, p, u, SCENE_LIGHT_NORMAL_FROM_VERTICES);
         // The sampled point's barycentrics are sample_triangle_light's (lights.h).
-        if (feature_on(scene_features, FEATURE_PBR) && feature_on(scene_features, FEATURE_TEXTURES) &&
-            l.type == LIGHT_TRIANGLE && ls.pdf > 0.0f)
+        if (feature_on(scene_features, FEATURE_PBR) &&
+            feature_on(scene_features, FEATURE_TEXTURES) && l.type == LIGHT_TRIANGLE &&
+            ls.pdf > 0.0f)
             ls.radiance *= scene_emission_texture(l, sample_uniform_triangle(u));
         return ls;
     }

@@ -11,6 +11,10 @@ TP_NAMESPACE_BEGIN
 
 const uint NO_INDEX = 0xFFFFFFFFu;
 const int NO_TEXTURE = -1;
+// A material's texture slots, in the order the scene reads apply them (scene_access.h,
+// material_texture): base colour, metallic-roughness, emission, transmission, specular, specular
+// colour, normal map.
+const uint MATERIAL_TEXTURE_SLOTS = 7u;
 
 // ---- materials ---------------------------------------------------------------------------
 const uint MATERIAL_PHONG = 0u;      // modified Phong, Lafortune & Willems 1994
@@ -40,11 +44,11 @@ struct Material {
     float metallic;
     float roughness; // glTF roughness: the GGX width is its square
     float transmission;
-    float specular;             // KHR_materials_specular's specularFactor
-    float alpha;                // coverage: baseColorFactor's alpha
-    float alpha_cutoff;         // ALPHA_MASK's threshold
-    uint alpha_mode;            // ALPHA_*
-    float attenuation_distance; // PBR volume: Beer-Lambert distance, FLOAT_MAX for none
+    float specular;                 // KHR_materials_specular's specularFactor
+    float alpha;                    // coverage: baseColorFactor's alpha
+    float alpha_cutoff;             // ALPHA_MASK's threshold
+    uint alpha_mode;                // ALPHA_*
+    float attenuation_distance;     // PBR volume: Beer-Lambert distance, FLOAT_MAX for none
     int metallic_roughness_texture; // B: metallic, G: roughness (linear)
     int normal_texture;             // tangent-space normal map, scaled by normal_scale
     int emissive_texture;           // multiplies ke (sRGB)

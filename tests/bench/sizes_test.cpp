@@ -2,6 +2,7 @@
 // one tiny real run on the CPU and Vulkan (lavapipe in CI) through the command line. Its table
 // and plot are the lab's (tests/lab/sizes_report_test.cpp). Never a timing: only that the rates
 // are the render's rays over its own time.
+#include "bench/scenes.h"
 #include "bench/sizes.h"
 #include "support/test_paths.h"
 #include "util/error.h"
@@ -48,13 +49,36 @@ TEST_CASE("bench --sizes-list words parse to sizes in ascending order of pixels"
     CHECK_THROWS_AS(parse_image_sizes({}), tp::InputError);
 }
 
+TEST_CASE("sized scene names give a family and a number of copies", "[sizes]") {
+    using tp::bench::parse_sized_scene;
+    const auto sized = parse_sized_scene("buddhas_30");
+    REQUIRE(sized);
+    CHECK(sized->family == "buddhas");
+    CHECK(sized->copies == 30);
+    CHECK(tp::bench::sized_scene_name({"suzannes", 4}) == "suzannes_4");
+    for (const char* other : {"buddhas", "buddhas_", "buddhas_0", "buddhas_07", "buddhas_10001",
+                              "buddhas_instanced", "buddhas_3x", "bunnies_3", "cornell"}) {
+        INFO(other);
+        CHECK(!parse_sized_scene(other));
+    }
+    const auto entry = tp::bench::find_catalogue_entry("suzannes_5");
+    REQUIRE(entry);
+    const json scene = entry->generate("/assets");
+    CHECK(scene["objects"].size() == 6); // the floor and five copies
+    CHECK(scene["meshes"].size() == 6);  // each copy its own mesh: no instancing
+    CHECK(scene["meshes"]["suzannes_4"]["file"] == "/assets/suzanne/suzanne.obj");
+}
+
 TEST_CASE("bench --sizes rejects bad sizes, times and rounds with exit code 2", "[sizes]") {
     const std::string dir = tp::test::temp_dir("bench-sizes-bad");
     for (const auto& [args, message] : std::vector<std::pair<std::string, std::string>>{
              {"--sizes-list 64x0", "each side must be 1 to 16384"},
              {"--sizes-list 64,big", "'big' is not an image size"},
              {"--sizes-time 0", "--sizes-time"},
-             {"--sizes-rounds 0", "--sizes-rounds"}}) {
+             {"--sizes-rounds 0", "--sizes-rounds"},
+             {"--sizes-spp 0", "--sizes-spp"},
+             {"--scene-sizes 0", "--scene-sizes: copies are 1 to"},
+             {"--scene-sizes 2 --scene-sizes-family bunnies", "'bunnies' is not one of"}}) {
         const auto p = tp::test::run(tp::test::twinpath_bin() + " bench --quick --sizes " + args +
                                      " --out " + shell_quote(dir + "/out"));
         INFO(args << "\n" << p.out);
@@ -99,6 +123,54 @@ TEST_CASE("bench --sizes measures every size on the CPU and Vulkan", "[sizes]") 
                                 pt["rays"]["shadow"].get<double>();
             CHECK(pt["mrays_s"].get<double>() == Approx(1e-6 * rays / seconds));
             CHECK(pt["rounds_mrays_s"].size() == 1); // --quick: one round
+        }
+    }
+}
+
+TEST_CASE("bench --sizes --scene-sizes measures scenes of N distinct meshes", "[sizes]") {
+    const std::string dir = tp::test::temp_dir("bench-scene-sizes");
+    const std::string out = dir + "/out";
+    const auto p =
+        tp::test::run(tp::test::twinpath_bin() +
+                      " bench --quick --sizes --scene-sizes 2,1 --scene-sizes-family suzannes "
+                      "--backends cpu,vulkan:compute --sizes-list 8x6 --sizes-spp 2 --out " +
+                      shell_quote(out) + " --cache " + shell_quote(dir + "/cache"));
+    INFO(p.out);
+    REQUIRE(p.exit_code == 0);
+    const json r = read_json(out + "/bench.json");
+    if (r["scenes"].empty()) {
+        WARN("the shared test meshes are missing: " << r["skipped"].dump());
+        return;
+    }
+    CHECK(r["settings"]["sizes"]["scene_sizes"] == json::array({2, 1}));
+    REQUIRE(r["scenes"].size() == 2); // only the sized scenes: --scenes was not given
+    const json &two = r["scenes"][0], &one = r["scenes"][1];
+    CHECK(two["name"] == "suzannes_2");
+    CHECK(one["name"] == "suzannes_1");
+    // Suzanne's 968 triangles a copy, and the floor's two; each copy stored on its own.
+    CHECK(one["unique_triangles"] == 970);
+    CHECK(two["unique_triangles"] == 2 * 968 + 2);
+    CHECK(two["triangles"] == two["unique_triangles"]);
+    for (const json& sc : r["scenes"]) {
+        const json& runs = sc["sizes"];
+        REQUIRE(runs.size() == r["backends"].size());
+        if (runs.size() == 1) WARN("no Vulkan backend here: " << r["skipped"].dump());
+        for (const json& run : runs) {
+            REQUIRE(run["points"].size() == 1);
+            const json& pt = run["points"][0];
+            CHECK(pt["spp"] == 2); // --sizes-spp: exactly that many, no time limit
+            CHECK(pt["triangles"] == sc["unique_triangles"]);
+            CHECK(pt["build_s"].get<double>() > 0);
+            if (run["backend"] == "cpu") {
+                CHECK(pt["build_stages"].is_null());
+                CHECK(pt["device_memory_peak_bytes"].is_null());
+                continue;
+            }
+            for (const char* stage : {"primitives", "embree", "layout", "write", "estimate"})
+                CHECK(pt["build_stages"][stage].get<double>() >= 0);
+            CHECK(pt["upload_s"].get<double>() >= 0);
+            CHECK(pt["device_memory_peak_bytes"].get<uint64_t>() >=
+                  pt["accel_bytes"].get<uint64_t>());
         }
     }
 }

@@ -58,6 +58,15 @@ std::string scene_with_scaled_albedo(const std::string& scene, const std::string
     return out;
 }
 
+std::string scene_with_materials(const std::string& scene, const nlohmann::json& replacements,
+                                 const std::string& tag, const std::string& dir) {
+    nlohmann::json j = nlohmann::json::parse(std::ifstream(resolve_scene_path(scene)));
+    for (const auto& [name, material] : replacements.items()) j.at("materials").at(name) = material;
+    const std::string out = dir + "/" + scene + "_" + tag + ".json";
+    std::ofstream(out) << j.dump(2);
+    return out;
+}
+
 BackendComparison compare_backends(const std::string& scene, uint32_t width, uint32_t height,
                                    uint32_t spp, const BackendRun& a, const BackendRun& b,
                                    double alpha) {

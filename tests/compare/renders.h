@@ -36,6 +36,12 @@ void render_cpu_file(const RenderSpec& spec, const std::string& path);
 std::string scene_with_scaled_albedo(const std::string& scene, const std::string& material,
                                      double factor, const std::string& dir);
 
+// A copy of a bundled scene's JSON with each material named in `replacements` (an object of
+// material objects as docs/scene-format.md spells them) replaced, written into `dir` as
+// `scene`_`tag`.json; returns its path.
+std::string scene_with_materials(const std::string& scene, const nlohmann::json& replacements,
+                                 const std::string& tag, const std::string& dir);
+
 // ---- Cross-backend hook --------------------------------------------------------------------
 // One rendering through `twinpath render`: backend "cpu" or "vulkan" (vk_mode "auto",
 // "compute" or "pipeline"), seed and thread count. Until the Vulkan backend lands only

@@ -148,6 +148,41 @@ TEST_CASE("a slow device gets bands of rows and a fast one several samples per p
           std::min(BatchPlanner::kMaxSamplesPerBatch, 1000 - fast.samples_done()));
 }
 
+// The viewer's rule (progressive_renderer.h): frames of 1/60 s, but a pass that takes at most
+// 0.1 s at the measured throughput is one frame rather than bands of rows.
+TEST_CASE("a pass within the whole-pass time is one batch, a longer one bands", "[gpu]") {
+    const auto frames_of_first_passes = [](double pixel_samples_per_s) {
+        BatchPlanner plan(512, 512, 100, 1.0 / 60, 16384, 1 << 20, 0.1);
+        std::vector<Batch> batches;
+        for (int i = 0; i < 40 && plan.samples_done() < 3; ++i) {
+            const Batch b = plan.next();
+            batches.push_back(b);
+            plan.completed(b, double(512 * (b.row_end - b.row_begin) * b.sample_count) /
+                                  pixel_samples_per_s);
+        }
+        return batches;
+    };
+    // 512x512 at 4 Mpixel-samples/s: a pass takes 66 ms. The first batch is planned before any
+    // measurement (16384 pixel-samples: a band), the passes after it are whole.
+    std::vector<Batch> b = frames_of_first_passes(4e6);
+    CHECK(b.front().row_end - b.front().row_begin < 512);
+    const Batch& last = b.back();
+    CHECK(last.row_begin == 0);
+    CHECK(last.row_end == 512);
+    CHECK(last.sample_count == 1);
+    // At 1 Mpixel-samples/s a pass takes 262 ms: bands of about 1/60 s each.
+    b = frames_of_first_passes(1e6);
+    for (size_t i = 1; i < b.size(); ++i)
+        CHECK(b[i].row_end - b[i].row_begin <= 2 * (1e6 / 60 / 512) + 1);
+    // Without the rule (render's planner) the 66 ms pass is cut into 1/60 s bands.
+    BatchPlanner render(512, 512, 100, 1.0 / 60, 16384, 1 << 20);
+    for (int i = 0; i < 10; ++i) {
+        const Batch r = render.next();
+        CHECK(r.row_end - r.row_begin < 512);
+        render.completed(r, double(512 * (r.row_end - r.row_begin) * r.sample_count) / 4e6);
+    }
+}
+
 TEST_CASE("the planner never plans more than the largest submission it is given", "[gpu]") {
     BatchPlanner plan(1920, 1080, 4096, 0.1, 1 << 20, 1 << 22);
     for (int i = 0; i < 20 && !plan.done(); ++i) {

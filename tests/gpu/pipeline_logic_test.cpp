@@ -256,6 +256,7 @@ TEST_CASE("meshes without triangles get no BLAS and their instances no record", 
     scene.meshes[0] = {0, 0, 2, 4, 0, 0, 0, 0};
     scene.meshes[1] = {2, 4, 0, 0, 0, 0, 0, 0}; // empty
     scene.meshes[2] = {2, 4, 1, 3, 0, 0, 0, 0};
+    scene.materials.resize(1); // every instance's material 0: opaque
     scene.instances.resize(4);
     for (uint32_t i = 0; i < 4; ++i) scene.instances[i].mesh = i % 3; // 0, 1, 2, 0
     const std::vector<BlasGeometry> geoms = blas_geometries(scene, {0, 0, 0});
@@ -316,7 +317,7 @@ TEST_CASE("auto picks pipeline where supported and pipeline elsewhere is a clear
 
 // The words are what the command line reads and the outputs write (RenderStats::mode in the
 // stats JSON, the bench and stress reports): saved files and the other tests depend on them.
-TEST_CASE("the mode and backend words read back as what they name; other words are refused",
+TEST_CASE("the mode and backend words read back as what they name, other words are refused",
           "[gpu]") {
     CHECK(std::string(vk_mode_name(VkMode::compute)) == "compute");
     CHECK(std::string(vk_mode_name(VkMode::pipeline)) == "pipeline");

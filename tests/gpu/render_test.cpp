@@ -6,6 +6,7 @@
 // device has it (not lavapipe). CTest runs this with TWINPATH_VALIDATION=1, and a render that
 // drew a validation message exits with 3.
 #include "image/exr_io.h"
+#include "shaders/interface.h"
 #include "support/test_paths.h"
 
 #include <catch2/catch.hpp>
@@ -51,6 +52,16 @@ void check_vulkan_stats(const nlohmann::json& s, uint64_t pixel_samples, const c
     CHECK(s["rays_per_second"].get<double>() > 0.0);
     CHECK(s["extra"]["validation"] == "on");
     CHECK(s["extra"]["validation_messages"] == "0");
+    // The device holds at least the acceleration structure and the film's accumulators (one
+    // PixelAccum a pixel and slot: shaders/interface.h), and a render of a bundled scene at
+    // these sizes far less than 256 MiB.
+    const uint64_t film = s["width"].get<uint64_t>() * s["height"].get<uint64_t>() *
+                          accum_slots(s["sampler"] == "sobol" ? SAMPLER_SOBOL : SAMPLER_RANDOM) *
+                          sizeof(PixelAccum);
+    const uint64_t peak = s["device_memory_peak_bytes"].get<uint64_t>();
+    CHECK(peak >= s["accel_bytes"].get<uint64_t>() + film);
+    CHECK(peak < (uint64_t(256) << 20));
+    CHECK(s["upload_time_s"].get<double>() >= 0);
 }
 
 } // namespace
@@ -310,6 +321,24 @@ TEST_CASE("twinpath info --json lists the Vulkan devices and their modes", "[gpu
 // The 1 s limit decides nothing by itself: however loaded the machine, the render makes at
 // least one pass (spp >= 1), and no device makes 10^8 spp of 16 x 16 in a second or ten; what is
 // checked is that it stopped on a pass boundary (samples = pixels x spp).
+TEST_CASE("a Vulkan render's statistics give its peak device memory", "[gpu]") {
+    const std::string dir = temp_dir("vk-memory");
+    for (const char* sampler : {"sobol", "random"}) {
+        const ProcessResult r = render("cornell", "vulkan", dir, sampler,
+                                       fmt::format("--vk-mode compute --width 48 --height 32 "
+                                                   "--spp 4 --sampler {}",
+                                                   sampler));
+        INFO(r.out);
+        REQUIRE(r.exit_code == 0);
+        check_vulkan_stats(read_json(dir + "/" + sampler + ".json"), 48ull * 32 * 4, "compute");
+    }
+    // The CPU holds no device memory and uploads nothing.
+    REQUIRE(render("cornell", "cpu", dir, "cpu", "--width 8 --height 8 --spp 1").exit_code == 0);
+    const nlohmann::json cpu = read_json(dir + "/cpu.json");
+    CHECK(cpu["device_memory_peak_bytes"].is_null());
+    CHECK(cpu["upload_time_s"].is_null());
+}
+
 TEST_CASE("a Vulkan render with a time limit stops after whole passes", "[gpu]") {
     const std::string dir = temp_dir("vk-time");
     const ProcessResult r = render("cornell", "vulkan", dir, "t",

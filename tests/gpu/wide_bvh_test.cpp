@@ -13,11 +13,10 @@
 #include "shared/features.h"
 #include "shared/surface.h"
 #include "support/test_paths.h"
+#include "triangle_soup.h"
 #include "vulkan_rt/compute_mode/bvh_builder.h"
 
 #include <catch2/catch.hpp>
-#include <fmt/format.h>
-#include <glm/gtc/matrix_transform.hpp>
 
 #include <cstring>
 #include <filesystem>
@@ -201,49 +200,6 @@ FlatScene load(const std::string& path) {
     return flatten(load_scene(path, warnings));
 }
 
-// `count` random triangles of size about `size` around points uniform in [-extent, extent]^3
-// shifted by `centre`, under `instances` random placements (scale and translation), then with
-// every `degenerate`-th triangle collapsed: to a point, or onto a line through its first vertex.
-FlatScene soup(uint32_t seed, uint32_t count, double centre, double extent, double size,
-               uint32_t instances, uint32_t degenerate) {
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-1.0, 1.0);
-    Scene s;
-    s.path = fmt::format("soup {}", seed);
-    s.materials = {default_material()};
-    s.material_names = {"grey"};
-    Mesh mesh;
-    for (uint32_t i = 0; i < count; ++i) {
-        const glm::dvec3 c = centre + extent * glm::dvec3(u(rng), u(rng), u(rng));
-        for (int k = 0; k < 3; ++k)
-            mesh.positions.push_back(vec3(c + size * glm::dvec3(u(rng), u(rng), u(rng))));
-        mesh.triangles.push_back(uvec3(3 * i, 3 * i + 1, 3 * i + 2));
-    }
-    s.meshes = {mesh};
-    for (uint32_t i = 0; i < instances; ++i) {
-        Object o;
-        o.name = fmt::format("object {}", i);
-        if (i > 0)
-            o.transform = glm::translate(glm::scale(glm::mat4(1.0f), vec3(float(1.0 + u(rng)))),
-                                         vec3(float(extent * u(rng)), 0.0f, 0.0f));
-        s.objects.push_back(o);
-    }
-    s.camera.given = true;
-    s.camera.eye = vec3(float(centre));
-    s.camera.target = vec3(float(centre), float(centre), float(centre) - 1.0f);
-    s.settings.width = s.settings.height = 8;
-    FlatScene flat = flatten(s);
-    // Collapsed after flatten(), which would drop zero-area triangles: the builder must still
-    // hold them in boxes that contain them.
-    for (uint32_t i = 0; degenerate > 0 && i < flat.meshes[0].triangle_count; i += degenerate) {
-        const uvec3 t = flat.triangles[flat.meshes[0].first_triangle + i];
-        vec3* p = &flat.positions[flat.meshes[0].first_vertex];
-        p[t.y] = (i / degenerate) % 2 ? p[t.x] : p[t.x] + (p[t.x] - p[t.z]);
-        p[t.z] = p[t.x];
-    }
-    return flat;
-}
-
 } // namespace
 
 TEST_CASE("wide BVH: decoded boxes contain their content on the bundled scenes", "[wide_bvh]") {
@@ -266,17 +222,17 @@ TEST_CASE("wide BVH: decoded boxes contain their content on the bunny and the Bu
 
 TEST_CASE("wide BVH: decoded boxes contain their content on random soups", "[wide_bvh]") {
     // Ordinary triangles; every 7th one degenerate.
-    check_wide(soup(1, 3000, 0.0, 10.0, 0.5, 3, 7));
+    check_wide(test::soup(1, 3000, 0.0, 10.0, 0.5, 3, 7));
     // Triangles far smaller than the ulp of their coordinates' distance from the origin
     // (1e-4 at 1e6, where floats are 0.0625 apart): boxes narrower than one step of any scale.
-    check_wide(soup(2, 2000, 1e6, 1.0, 1e-4, 2, 5));
+    check_wide(test::soup(2, 2000, 1e6, 1.0, 1e-4, 2, 5));
     // Coordinates up to the range rule's 2^36 (scene/flatten.h): a mesh just under 2^36 wide,
     // stored relative to its lowest corner; mixed sizes, many degenerate.
-    check_wide(soup(3, 2000, 0.0, 0x1p35 - 0x1p29, 0x1p29, 1, 3));
+    check_wide(test::soup(3, 2000, 0.0, 0x1p35 - 0x1p29, 0x1p29, 1, 3));
     // All triangles degenerate, half of them single points.
-    check_wide(soup(4, 500, -3.0, 2.0, 1.0, 1, 1));
+    check_wide(test::soup(4, 500, -3.0, 2.0, 1.0, 1, 1));
     // A few triangles: a tree that is one leaf.
-    check_wide(soup(5, 2, 0.0, 1.0, 1.0, 1, 0));
+    check_wide(test::soup(5, 2, 0.0, 1.0, 1.0, 1, 0));
 }
 
 } // namespace tp

@@ -3,9 +3,9 @@
 // exhaustive search: on random binary trees, the least cost over every wide tree whose nodes are
 // unions of binary subtrees (every choice of up to 8 slot roots below each node, each a leaf of at
 // most max_leaf items or a node of its own) must equal the cost the dynamic program reports, and
-// the tree it returns must have that cost when evaluated from its boxes, hold every item once in
-// leaves of at most max_leaf, and give each slot the box of its binary subtree. Host only: no
-// device needed.
+// the tree it chose must have that cost when evaluated from its boxes, hold every item once in
+// leaves of at most max_leaf, give each slot the box of its binary subtree and have the node,
+// item and level counts the program reports. Host only: no device needed.
 #include "shaders/cwbvh.h"
 #include "vulkan_rt/compute_mode/wide_collapse.h"
 
@@ -28,23 +28,23 @@ namespace {
 class Forest {
   public:
     // A random tree over `leaves` items with random boxes; every `flat`-th item is a point.
-    const TreeNode* random(std::mt19937& rng, uint32_t leaves, uint32_t flat, RTCBounds& box) {
+    TreeNode* random(std::mt19937& rng, uint32_t leaves, uint32_t flat, RTCBounds& box) {
         return split(rng, 0, leaves, flat, box);
     }
 
     // A balanced tree of 2^levels point items at the origin: every cost is 0.
-    const TreeNode* points(uint32_t levels, uint32_t& next, RTCBounds& box) {
+    TreeNode* points(uint32_t levels, uint32_t& next, RTCBounds& box) {
         box = RTCBounds{};
         if (levels == 0) return leaf(next++);
         RTCBounds a, b;
-        const TreeNode* l = points(levels - 1, next, a);
-        const TreeNode* r = points(levels - 1, next, b);
+        TreeNode* l = points(levels - 1, next, a);
+        TreeNode* r = points(levels - 1, next, b);
         return inner(l, a, r, b);
     }
 
   private:
-    const TreeNode* split(std::mt19937& rng, uint32_t first, uint32_t count, uint32_t flat,
-                          RTCBounds& box) {
+    TreeNode* split(std::mt19937& rng, uint32_t first, uint32_t count, uint32_t flat,
+                    RTCBounds& box) {
         if (count == 1) {
             std::uniform_real_distribution<float> u(-10.0f, 10.0f), size(0.0f, 3.0f);
             const float x = u(rng), y = u(rng), z = u(rng);
@@ -56,8 +56,8 @@ class Forest {
         }
         const uint32_t left = std::uniform_int_distribution<uint32_t>(1, count - 1)(rng);
         RTCBounds a, b;
-        const TreeNode* l = split(rng, first, left, flat, a);
-        const TreeNode* r = split(rng, first + left, count - left, flat, b);
+        TreeNode* l = split(rng, first, left, flat, a);
+        TreeNode* r = split(rng, first + left, count - left, flat, b);
         box = RTCBounds{std::min(a.lower_x, b.lower_x), std::min(a.lower_y, b.lower_y),
                         std::min(a.lower_z, b.lower_z), 0.0f,
                         std::max(a.upper_x, b.upper_x), std::max(a.upper_y, b.upper_y),
@@ -65,7 +65,7 @@ class Forest {
         return inner(l, a, r, b);
     }
 
-    const TreeNode* leaf(uint32_t item) {
+    TreeNode* leaf(uint32_t item) {
         items_.push_back(item);
         TreeLeaf& l = leaves_.emplace_back();
         l.count = 1;
@@ -73,24 +73,19 @@ class Forest {
         return &l;
     }
 
-    const TreeNode* inner(const TreeNode* l, const RTCBounds& a, const TreeNode* r,
-                          const RTCBounds& b) {
-        auto& children = child_.emplace_back();
-        auto& bounds = bounds_.emplace_back();
-        children = {l, r};
-        bounds = {a, b};
+    TreeNode* inner(TreeNode* l, const RTCBounds& a, TreeNode* r, const RTCBounds& b) {
         TreeInner& n = inners_.emplace_back();
         n.children = 2;
-        n.child = children.data();
-        n.bounds = bounds.data();
+        n.child[0] = l;
+        n.child[1] = r;
+        n.bounds[0] = a;
+        n.bounds[1] = b;
         return &n;
     }
 
     std::deque<uint32_t> items_;
     std::deque<TreeLeaf> leaves_;
     std::deque<TreeInner> inners_;
-    std::deque<std::array<const TreeNode*, 2>> child_;
-    std::deque<std::array<RTCBounds, 2>> bounds_;
 };
 
 uint32_t items_below(const TreeNode* n) {
@@ -199,45 +194,59 @@ void subtree_boxes(const TreeNode* n, const RTCBounds& box,
     out[items] = box;
 }
 
-// Checks the returned tree's structure; returns its depth.
-uint32_t check_tree(const WideTree& t, const TreeNode* root, const RTCBounds& box,
-                    uint32_t max_leaf) {
+// Checks the chosen tree's structure against the binary tree and the program's counts; returns
+// its cost evaluated from its boxes.
+double check_tree(const WideCollapse& c, const TreeNode* root, const RTCBounds& box,
+                  uint32_t max_leaf) {
     std::map<std::set<uint32_t>, RTCBounds> boxes;
     std::set<uint32_t> all;
     subtree_boxes(root, box, boxes, all);
     std::multiset<uint32_t> seen;
-    std::function<std::set<uint32_t>(uint32_t, uint32_t, uint32_t&)> walk =
-        [&](uint32_t index, uint32_t level, uint32_t& depth) {
+    uint32_t nodes = 0, depth = 0;
+    double cost = kCollapseNodeCost * half_area(box);
+    std::function<std::set<uint32_t>(const WideSlot*, uint32_t, uint32_t)> walk =
+        [&](const WideSlot* slots, uint32_t count, uint32_t level) {
+            ++nodes;
             depth = std::max(depth, level);
-            const WideTreeNode& n = t.nodes.at(index);
-            REQUIRE(n.slots >= 1);
-            REQUIRE(n.slots <= kWideSlots);
+            REQUIRE(count >= 1);
+            REQUIRE(count <= kWideSlots);
             std::set<uint32_t> below;
-            for (uint32_t s = 0; s < n.slots; ++s) {
-                const WideSlot& slot = n.slot[s];
+            for (uint32_t s = 0; s < count; ++s) {
+                const WideSlot& slot = slots[s];
+                const double area = half_area(slot.bounds);
                 std::set<uint32_t> items;
                 if (slot.count > 0) {
                     REQUIRE(slot.count <= max_leaf);
-                    for (uint32_t k = 0; k < slot.count; ++k) {
-                        items.insert(t.items.at(slot.first + k));
-                        seen.insert(t.items.at(slot.first + k));
-                    }
+                    std::vector<uint32_t> leaf(slot.count);
+                    wide_leaf_items(slot.node, leaf.data());
+                    items.insert(leaf.begin(), leaf.end());
+                    seen.insert(leaf.begin(), leaf.end());
+                    cost += kCollapsePrimitiveCost * area * slot.count;
                 } else {
-                    items = walk(slot.node, level + 1, depth);
+                    const auto* inner = static_cast<const TreeInner*>(slot.node);
+                    WideSlot child[kWideSlots];
+                    const uint32_t n = wide_node_slots(inner, child);
+                    items = walk(child, n, level + 1);
+                    CHECK(inner->scratch.items == items.size());
+                    cost += kCollapseNodeCost * area;
                 }
                 // A slot is a binary subtree, with that subtree's box.
                 const auto sub = boxes.find(items);
                 REQUIRE(sub != boxes.end());
                 CHECK(std::memcmp(&sub->second, &slot.bounds, sizeof(RTCBounds)) == 0);
-                CHECK(contains(t.bounds, slot.bounds));
+                CHECK(contains(box, slot.bounds));
                 below.insert(items.begin(), items.end());
             }
             return below;
         };
-    uint32_t depth = 0;
-    CHECK(walk(0, 1, depth) == all);
+    WideSlot slots[kWideSlots];
+    const uint32_t n = wide_root_slots(root, box, c, slots);
+    CHECK(walk(slots, n, 1) == all);
     CHECK(seen.size() == all.size());
-    return depth;
+    CHECK(c.nodes == nodes);
+    CHECK(c.items == all.size());
+    CHECK(c.depth == depth);
+    return cost;
 }
 
 } // namespace
@@ -251,14 +260,13 @@ TEST_CASE("wide collapse: the dynamic program finds the least SAH cost of any co
         const uint32_t flat = trial % 4 == 1 ? 3 : 0;
         Forest forest;
         RTCBounds box;
-        const TreeNode* root = forest.random(rng, leaves, flat, box);
+        TreeNode* root = forest.random(rng, leaves, flat, box);
         INFO("trial " << trial << ": " << leaves << " items, leaves of at most " << max_leaf);
-        const WideTree t = collapse_to_wide(root, box, max_leaf);
+        const WideCollapse c = collapse_to_wide(root, box, max_leaf);
         const double exhaustive = Exhaustive(max_leaf).tree(root, box);
         // The program sums the same terms in another order: relative rounding of a few ulp.
-        CHECK(t.cost == Approx(exhaustive).epsilon(1e-12));
-        CHECK(wide_tree_cost(t) == Approx(t.cost).epsilon(1e-12));
-        check_tree(t, root, box, max_leaf);
+        CHECK(c.cost == Approx(exhaustive).epsilon(1e-12));
+        CHECK(check_tree(c, root, box, max_leaf) == Approx(c.cost).epsilon(1e-12));
     }
 }
 
@@ -268,27 +276,31 @@ TEST_CASE("wide collapse: flat subtrees, where every cost ties at 0, stay shallo
     Forest forest;
     RTCBounds box;
     uint32_t next = 0;
-    const TreeNode* root = forest.points(9, next, box);
-    const WideTree t = collapse_to_wide(root, box, CWBVH_MAX_LEAF);
-    CHECK(t.cost == 0.0);
-    CHECK(check_tree(t, root, box, CWBVH_MAX_LEAF) <= 4);
+    TreeNode* root = forest.points(9, next, box);
+    const WideCollapse c = collapse_to_wide(root, box, CWBVH_MAX_LEAF);
+    CHECK(c.cost == 0.0);
+    CHECK(check_tree(c, root, box, CWBVH_MAX_LEAF) == 0.0);
+    CHECK(c.depth <= 4);
 }
 
 TEST_CASE("wide collapse: an empty tree and a tree of one leaf", "[wide_bvh]") {
     const RTCBounds box{0, 0, 0, 0, 1, 2, 3, 0};
-    const WideTree empty = collapse_to_wide(nullptr, box, CWBVH_MAX_LEAF);
-    REQUIRE(empty.nodes.size() == 1);
-    CHECK(empty.nodes[0].slots == 0);
+    const WideCollapse empty = collapse_to_wide(nullptr, box, CWBVH_MAX_LEAF);
+    CHECK(empty.nodes == 1);
+    CHECK(empty.items == 0);
     CHECK(empty.cost == 0.0);
     uint32_t item = 7;
     TreeLeaf leaf;
     leaf.count = 1;
     leaf.items = &item;
-    const WideTree one = collapse_to_wide(&leaf, box, CWBVH_MAX_LEAF);
-    REQUIRE(one.nodes.size() == 1);
-    REQUIRE(one.nodes[0].slots == 1);
-    CHECK(one.nodes[0].slot[0].count == 1);
-    CHECK(one.items == std::vector<uint32_t>{7});
+    const WideCollapse one = collapse_to_wide(&leaf, box, CWBVH_MAX_LEAF);
+    CHECK(one.nodes == 1);
+    WideSlot slots[kWideSlots];
+    REQUIRE(wide_root_slots(&leaf, box, one, slots) == 1);
+    CHECK(slots[0].count == 1);
+    uint32_t got = 0;
+    wide_leaf_items(slots[0].node, &got);
+    CHECK(got == 7);
     // The root node and its one triangle: (1 + 0.3) x half the area, 2 + 6 + 3.
     CHECK(one.cost == Approx(1.3 * 11.0));
 }

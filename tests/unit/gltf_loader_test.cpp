@@ -149,7 +149,7 @@ TEST_CASE("glTF: external, embedded and GLB buffers load the same scene", "[unit
     CHECK(tp::test::unit_cube().positions.size() == a.meshes[0].positions.size());
 }
 
-TEST_CASE("glTF: accessors: interleaved, normalized, quantized, sparse; strips and fans",
+TEST_CASE("glTF: accessors: interleaved, normalized, quantized, sparse, and strips and fans",
           "[unit][gltf]") {
     GltfBuilder g;
     // Interleaved float position + normal, 24 bytes per vertex.

@@ -4,6 +4,7 @@
 #include "image/png_io.h"
 #include "scene/flatten.h"
 #include "scene/load.h"
+#include "scene/obj_loader.h"
 #include "shared/math.h"
 #include "shared/surface.h"
 #include "support/test_paths.h"
@@ -11,6 +12,7 @@
 #include <catch2/catch.hpp>
 #include <glm/glm.hpp>
 
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <numeric>
@@ -289,4 +291,59 @@ TEST_CASE("bundled scenes resolve by name", "[scene]") {
     const tp::Scene s = tp::load_scene("cornell", warnings);
     CHECK(fs::path(s.path).filename() == "cornell.json");
     CHECK(tp::flatten(s).params.light_count == 2); // the ceiling light's two triangles
+}
+
+TEST_CASE("JSON: OBJ files read once each and at once give the scene of a serial load",
+          "[scene][obj]") {
+    // Two meshes name one file (with an MTL and a texture) and a third another file: each file
+    // is parsed once, on its own task, and appended per mesh in the meshes' order. The scene
+    // must be what load_obj gives called for each mesh in turn.
+    const fs::path dir = tp::test::temp_dir("loader-obj-files");
+    tp::write_png((dir / "wood.png").string(), 1, 1, {200, 150, 100});
+    std::ofstream(dir / "a.mtl") << "newmtl glossy\nKd 0.2 0.3 0.4\nKs 0.5\nmap_Kd wood.png\n"
+                                    "newmtl lamp\nKe 5 4 3\n";
+    std::ofstream(dir / "a.obj") << "mtllib a.mtl\nv 0 0 0\nv 1 0 0\nv 1 1 0\nv 0 1 0\nv 2 2 2\n"
+                                    "usemtl glossy\nf 1 2 3 4\nf 5 5 5\nusemtl lamp\nf 1 2 4\n";
+    std::ofstream(dir / "b.mtl") << "newmtl wood\nKd 0.5 0.4 0.3\nmap_Kd wood.png\nKa 1 1 1\n";
+    std::ofstream(dir / "b.obj") << "mtllib b.mtl\nusemtl wood\nv 0 0 1\nv 1 0 1\nv 0 1 1\n"
+                                    "f 1 2 3\n";
+    std::ofstream(dir / "s.json") << R"({
+      "camera": { "eye": [0, 0, 5], "target": [0, 0, 0], "fov": 40 },
+      "meshes": { "a1": { "type": "obj", "file": "a.obj" }, "b": { "type": "obj", "file": "b.obj" },
+                  "a2": { "type": "obj", "file": "a.obj" } },
+      "objects": [ { "mesh": "a1" }, { "mesh": "a2" }, { "mesh": "b" } ] })";
+    const Loaded l = load(dir / "s.json");
+    tp::Scene serial;
+    std::vector<std::string> serial_warnings;
+    std::vector<tp::ObjPart> parts;
+    for (const char* file : {"a.obj", "a.obj", "b.obj"}) // the meshes' order: a1, a2, b
+        for (const tp::ObjPart& p :
+             tp::load_obj((dir / file).string(), serial, tp::NO_INDEX, serial_warnings))
+            parts.push_back(p);
+    const tp::Scene& s = l.scene;
+    REQUIRE(s.materials.size() == serial.materials.size());
+    CHECK(std::memcmp(s.materials.data(), serial.materials.data(),
+                      serial.materials.size() * sizeof(tp::Material)) == 0);
+    CHECK(s.material_names == serial.material_names);
+    REQUIRE(s.textures.size() == 1);
+    CHECK(s.textures[0].name == serial.textures[0].name);
+    REQUIRE(s.texture_slots.size() == serial.texture_slots.size());
+    CHECK(std::memcmp(s.texture_slots.data(), serial.texture_slots.data(),
+                      serial.texture_slots.size() * sizeof(tp::TextureSlot)) == 0);
+    REQUIRE(s.meshes.size() == serial.meshes.size());
+    for (size_t m = 0; m < s.meshes.size(); ++m) {
+        CHECK(s.meshes[m].name == serial.meshes[m].name);
+        CHECK(s.meshes[m].positions == serial.meshes[m].positions);
+        CHECK(s.meshes[m].triangles == serial.meshes[m].triangles);
+    }
+    // The objects name the meshes and materials of the parts load_obj returned.
+    REQUIRE(s.objects.size() == parts.size());
+    for (size_t i = 0; i < parts.size(); ++i) {
+        CHECK(s.objects[i].mesh == parts[i].mesh);
+        CHECK(s.objects[i].material == parts[i].material);
+    }
+    CHECK(s.skipped_triangles == 2);
+    CHECK(s.skipped_triangles == serial.skipped_triangles);
+    CHECK(mentions(l.warnings, "Ka"));
+    fs::remove_all(dir);
 }

@@ -2,6 +2,7 @@
 
 #include "bench/result_json.h"
 #include "tools/lab/efficiency_report.h"
+#include "tools/lab/frame_loop_report.h"
 #include "tools/lab/result_fields.h"
 #include "tools/lab/sizes_report.h"
 #include "tools/lab/specialization_report.h"
@@ -271,6 +272,7 @@ std::string markdown_section(const json& r, const std::string& base) {
     if (has_section(r, "peer")) md += peer_section(r) + efficiency_markdown(r);
     if (has_section(r, "specialization")) md += specialization_section(r);
     if (has_section(r, "sizes")) md += sizes_section(r, base);
+    if (has_section(r, "frame_loop")) md += frame_loop_section(r);
     if (!r["skipped"].empty()) {
         md += "Skipped:\n\n";
         for (const json& s : r["skipped"])

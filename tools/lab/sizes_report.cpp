@@ -1,6 +1,7 @@
 #include "tools/lab/sizes_report.h"
 
 #include "tools/lab/result_fields.h"
+#include "tools/lab/scene_sizes_report.h"
 
 #include <fmt/format.h>
 
@@ -105,19 +106,27 @@ std::string sizes_section(const json& r, const std::string& base_dir) {
     const std::vector<ImageSize> sizes = settings_sizes(r);
     const ImageSize base = ratio_base(sizes);
     const ImageSize everyday{settings["width"].get<uint32_t>(), settings["height"].get<uint32_t>()};
+    const json& spp = settings["sizes"].value("spp", json(nullptr));
+    const std::string each =
+        spp.is_number()
+            ? fmt::format("renders one image size at {} spp", spp.get<int>())
+            : fmt::format("renders one image size for at least {:g} s (as many whole passes of "
+                          "samples as fit in that time, so small images get many samples)",
+                          settings["sizes"]["time_s"].get<double>());
     std::string md = fmt::format(
         "### Rays per second against image size\n\n"
-        "Each point renders one image size for at least {:g} s (as many whole passes of samples "
-        "as fit in that time, so small images get many samples; seed {}) and is the best of {} "
+        "Each point {} (seed {}) and is the best of {} "
         "over all sizes in turn. Mrays/s counts every ray traced (camera, extension, "
         "shadow) over GPU time (timestamp queries) where the device measures it, else over "
         "wall time (the CPU); each line says which. × {} is the rate over the same "
         "backend/mode's rate at {}. Numbers in `sizes.csv`.\n\n",
-        settings["sizes"]["time_s"].get<double>(), settings["seed"].get<int>(),
+        each, settings["seed"].get<int>(),
         settings["sizes"]["rounds"] == 1
             ? std::string("one round")
             : fmt::format("{} rounds", settings["sizes"]["rounds"].get<int>()),
         display_name(base), display_name(base));
+
+    md += scene_sizes_table(r, base);
 
     // The summary: the run's own image size (the everyday verification size, --width x
     // --height) against the base, per scene and backend/mode, when both were measured.

@@ -2,16 +2,25 @@
 
 #include "scene/world_vertex.h"
 #include "shared/surface.h"
+#include "util/clock.h"
 #include "util/error.h"
 
+#include "vulkan_rt/compute_mode/binary_writer.h"
 #include "vulkan_rt/compute_mode/bvh_estimate.h"
 #include "vulkan_rt/compute_mode/embree_tree.h"
 #include "vulkan_rt/compute_mode/wide_collapse.h"
 
+#include <fmt/format.h>
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_for.h>
+
 #include <algorithm>
+#include <chrono>
 
 namespace tp {
 namespace {
+
+using Clock = std::chrono::steady_clock;
 
 // A leaf item with its plane normal, which intersect_triangle_normal takes from the buffer
 // (shared/intersect.h).
@@ -26,112 +35,72 @@ BvhTriangle leaf_triangle(vec3 v0, vec3 v1, vec3 v2, uint32_t primitive, uint32_
     return t;
 }
 
-BvhNode empty_node() {
-    BvhNode n{};
-    n.ref0 = BVH_EMPTY;
-    n.ref1 = BVH_EMPTY;
-    return n;
+// Sets leaf item `item` of the layout's triangle array.
+void set_triangle(BvhBuild& out, uint32_t item, vec3 v0, vec3 v1, vec3 v2, uint32_t primitive,
+                  uint32_t instance) {
+    if (out.layout == BvhLayout::wide)
+        out.wide_triangles.set_triangle(item, v0, v1, v2, primitive, instance);
+    else
+        out.triangles[item] = leaf_triangle(v0, v1, v2, primitive, instance);
 }
 
-// Copies Embree's binary trees into the node layout of shared/intersect.h.
-class BinaryWriter {
-  public:
-    explicit BinaryWriter(std::vector<BvhNode>& nodes) : nodes_(&nodes) {}
+RTCBuildPrimitive triangle_primitive(vec3 a, vec3 b, vec3 c, uint32_t id) {
+    return make_primitive(glm::min(a, glm::min(b, c)), glm::max(a, glm::max(b, c)), id);
+}
 
-    // Appends the tree and returns its root node index and depth. A tree of one leaf gets a
-    // root node with that leaf and an absent second child; an empty one (root null), a root
-    // with no children.
-    uint32_t write(const TreeNode* top, const RTCBounds& all, const LeafEmitter& emit_leaf,
-                   uint32_t& depth) {
-        depth = 1;
-        const uint32_t root = uint32_t(nodes_->size());
-        nodes_->push_back(empty_node());
-        if (!top) return root;
-        if (top->count > 0) {
-            set_child(root, 0, all, static_cast<const TreeLeaf*>(top), emit_leaf, depth, 1);
-        } else {
-            flatten_inner(root, static_cast<const TreeInner*>(top), emit_leaf, depth, 1);
-        }
-        return root;
-    }
-
-  private:
-    void flatten_inner(uint32_t index, const TreeInner* n, const LeafEmitter& emit_leaf,
-                       uint32_t& depth, uint32_t level) {
-        depth = std::max(depth, level);
-        for (uint32_t c = 0; c < n->children; ++c) {
-            if (n->child[c]->count > 0) {
-                set_child(index, int(c), n->bounds[c], static_cast<const TreeLeaf*>(n->child[c]),
-                          emit_leaf, depth, level);
-            } else {
-                const uint32_t child = uint32_t(nodes_->size());
-                nodes_->push_back(empty_node());
-                flatten_inner(child, static_cast<const TreeInner*>(n->child[c]), emit_leaf, depth,
-                              level + 1);
-                write_child(index, int(c), n->bounds[c], child, 0);
-            }
-        }
-    }
-
-    void set_child(uint32_t index, int c, const RTCBounds& b, const TreeLeaf* leaf,
-                   const LeafEmitter& emit_leaf, uint32_t& depth, uint32_t level) {
-        depth = std::max(depth, level);
-        write_child(index, c, b, emit_leaf(leaf->items, leaf->count), leaf->count);
-    }
-
-    void write_child(uint32_t index, int c, const RTCBounds& b, uint32_t ref, uint32_t count) {
-        BvhNode& n = (*nodes_)[index];
-        const vec3 lo(b.lower_x, b.lower_y, b.lower_z), hi(b.upper_x, b.upper_y, b.upper_z);
-        if (c == 0) {
-            n.lo0 = lo;
-            n.hi0 = hi;
-            n.ref0 = ref;
-            n.count0 = count;
-        } else {
-            n.lo1 = lo;
-            n.hi1 = hi;
-            n.ref1 = ref;
-            n.count1 = count;
-        }
-    }
-
-    std::vector<BvhNode>* nodes_;
-};
-
-// Builds the trees of one BvhBuild in its layout: Embree's binary tree as it is, or, from a
-// binary tree with leaves of one item, its SAH-optimal collapse into the compressed wide nodes
-// (wide_collapse.h, wide_bvh.h).
+// Builds the trees of one BvhBuild in its layout, appending each to the layout's arrays: Embree's
+// binary tree as it is, or, from a binary tree with leaves of one item, its SAH-optimal collapse
+// into the compressed wide nodes (wide_collapse.h, wide_bvh.h). The leaf items' array is sized
+// by the caller; the trees' items follow each other in it.
 class Builder {
   public:
     explicit Builder(BvhBuild& out) : out_(out) {}
 
-    // Appends a tree over `prims` in the chosen layout; returns its root node index and depth.
-    // Leaves hold up to `max_leaf` items (binary; wide: at most CWBVH_MAX_LEAF).
+    // Appends a tree over `prims` and returns its root node index; `depth`: its levels. Leaves
+    // hold up to `max_leaf` items (binary; wide: at most CWBVH_MAX_LEAF). `instances`: every
+    // leaf holds one instance, which a binary node names itself (`write_leaf` is then called
+    // only for the wide layout's records).
     uint32_t build(std::vector<RTCBuildPrimitive> prims, uint32_t max_leaf, uint32_t max_depth,
-                   uint32_t& depth, const LeafEmitter& emit_leaf) {
+                   bool instances, uint32_t& depth, const LeafWriter& write_leaf) {
         const bool wide = out_.layout == BvhLayout::wide;
-        const TreeNode* top =
+        auto t = Clock::now();
+        TreeNode* top =
             prims.empty() ? nullptr : embree_.build(prims, wide ? 1 : max_leaf, max_depth);
         const RTCBounds all = bounds_of(prims);
-        if (wide)
-            return write_wide_tree(out_.wide_nodes,
-                                   collapse_to_wide(top, all, std::min(max_leaf, CWBVH_MAX_LEAF)),
-                                   emit_leaf, depth);
-        return BinaryWriter(out_.nodes).write(top, all, emit_leaf, depth);
+        prims = {};
+        out_.times.embree_s += seconds_since(t);
+        t = Clock::now();
+        uint32_t root = 0, items = 0;
+        if (wide) {
+            const WideCollapse c = collapse_to_wide(top, all, std::min(max_leaf, CWBVH_MAX_LEAF));
+            out_.times.layout_s += seconds_since(t);
+            t = Clock::now();
+            root = uint32_t(out_.wide_nodes.size());
+            out_.wide_nodes.resize(root + c.nodes);
+            write_wide_tree(top, all, c, out_.wide_nodes.data(), root, next_item_, write_leaf);
+            depth = c.depth;
+            items = c.items;
+        } else {
+            const TreeSize size = size_binary_tree(top, !instances);
+            out_.times.layout_s += seconds_since(t);
+            t = Clock::now();
+            root = uint32_t(out_.nodes.size());
+            out_.nodes.resize(root + size.nodes);
+            write_binary_tree(top, all, !instances, out_.nodes.data(), root, next_item_,
+                              write_leaf);
+            depth = size.depth;
+            items = size.items;
+        }
+        out_.times.write_s += seconds_since(t);
+        next_item_ += items;
+        return root;
     }
 
   private:
     BvhBuild& out_;
     EmbreeTreeBuilder embree_;
+    uint32_t next_item_ = 0;
 };
-
-// Appends a leaf triangle to the layout's triangle array and returns its index there.
-uint32_t add_triangle(BvhBuild& out, const BvhTriangle& t) {
-    if (out.layout == BvhLayout::wide)
-        return out.wide_triangles.add_triangle(t.v0, t.v1, t.v2, t.primitive, t.instance);
-    out.triangles.push_back(t);
-    return uint32_t(out.triangles.size() - 1);
-}
 
 // Binary leaves of at most 4 triangles: a leaf is then at most 192 contiguous bytes. The wide
 // layout's leaves hold at most CWBVH_MAX_LEAF, as the collapse chooses.
@@ -142,6 +111,8 @@ constexpr uint32_t kMaxTrianglesPerLeaf = 4;
 // collapses, in practice a third; build_bvh checks it against CWBVH_STACK_SIZE.
 constexpr uint32_t kMaxBottomDepth = 40;
 constexpr uint32_t kMaxTopDepth = 22;
+// Triangles of one task where a mesh's triangles or vertices are visited in parallel.
+constexpr size_t kGrain = 4096;
 
 // World box of an object box under an instance transform: the 8 corners transformed, padded by
 // 2^-20 of the largest coordinate so that the float rounding of the transform (a few ulp)
@@ -162,90 +133,116 @@ void world_box(const Instance& inst, vec3 lo, vec3 hi, vec3& wlo, vec3& whi) {
 }
 
 // The tree over every instance's triangles in world space (one level): each leaf item carries
-// its instance, since no instance marker leads to it.
+// its instance, since no instance marker leads to it. A triangle's primitive ID is its index in
+// the instances' triangles one after another; the world vertices are computed once per vertex
+// and the leaf items are written from them.
 void build_one_level(const FlatScene& scene, Builder& builder, BvhBuild& out) {
-    size_t count = 0;
-    for (const Instance& inst : scene.instances) count += scene.meshes[inst.mesh].triangle_count;
-    std::vector<BvhTriangle> world;
-    std::vector<RTCBuildPrimitive> prims;
-    world.reserve(count);
-    prims.reserve(count);
-    std::vector<vec3> v;
-    for (uint32_t i = 0; i < scene.instances.size(); ++i) {
+    auto t = Clock::now();
+    const size_t n = scene.instances.size();
+    std::vector<uint32_t> first_triangle(n + 1, 0), first_vertex(n + 1, 0);
+    for (size_t i = 0; i < n; ++i) {
+        const MeshInfo& mesh = scene.meshes[scene.instances[i].mesh];
+        first_triangle[i + 1] = first_triangle[i] + mesh.triangle_count;
+        first_vertex[i + 1] = first_vertex[i] + mesh.vertex_count;
+    }
+    std::vector<vec3> world(first_vertex[n]);
+    std::vector<RTCBuildPrimitive> prims(first_triangle[n]);
+    tbb::parallel_for(size_t(0), n, [&](size_t i) {
         const Instance& inst = scene.instances[i];
         const MeshInfo& mesh = scene.meshes[inst.mesh];
-        v.resize(mesh.vertex_count);
-        for (uint32_t k = 0; k < mesh.vertex_count; ++k)
-            v[k] = world_vertex(inst, scene.positions[mesh.first_vertex + k]);
-        for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
-            const uvec3 tri = scene.triangles[mesh.first_triangle + t];
-            const BvhTriangle bt = leaf_triangle(v[tri.x], v[tri.y], v[tri.z], t, i);
-            prims.push_back(make_primitive(glm::min(bt.v0, glm::min(bt.v1, bt.v2)),
-                                           glm::max(bt.v0, glm::max(bt.v1, bt.v2)),
-                                           uint32_t(world.size())));
-            world.push_back(bt);
-        }
-    }
-    out.top_root = builder.build(std::move(prims), kMaxTrianglesPerLeaf, kMaxBottomDepth,
-                                 out.bottom_depth, [&](const uint32_t* ids, uint32_t n) {
-                                     const uint32_t first = add_triangle(out, world[ids[0]]);
-                                     for (uint32_t k = 1; k < n; ++k)
-                                         add_triangle(out, world[ids[k]]);
-                                     return first;
-                                 });
+        vec3* v = &world[first_vertex[i]];
+        tbb::parallel_for(tbb::blocked_range<uint32_t>(0, mesh.vertex_count, kGrain), [&](auto r) {
+            for (uint32_t k = r.begin(); k != r.end(); ++k)
+                v[k] = world_vertex(inst, scene.positions[mesh.first_vertex + k]);
+        });
+        tbb::parallel_for(
+            tbb::blocked_range<uint32_t>(0, mesh.triangle_count, kGrain), [&](auto r) {
+                for (uint32_t k = r.begin(); k != r.end(); ++k) {
+                    const uvec3 tri = scene.triangles[mesh.first_triangle + k];
+                    prims[first_triangle[i] + k] =
+                        triangle_primitive(v[tri.x], v[tri.y], v[tri.z], first_triangle[i] + k);
+                }
+            });
+    });
+    if (out.layout == BvhLayout::wide)
+        out.wide_triangles.resize(first_triangle[n]);
+    else
+        out.triangles.resize(first_triangle[n]);
+    out.times.primitives_s += seconds_since(t);
+    out.top_root = builder.build(
+        std::move(prims), kMaxTrianglesPerLeaf, kMaxBottomDepth, false, out.bottom_depth,
+        [&](const uint32_t* ids, uint32_t count, uint32_t first) {
+            for (uint32_t k = 0; k < count; ++k) {
+                const uint32_t i = uint32_t(
+                    std::upper_bound(first_triangle.begin(), first_triangle.end(), ids[k]) -
+                    first_triangle.begin() - 1);
+                const uint32_t primitive = ids[k] - first_triangle[i];
+                const MeshInfo& mesh = scene.meshes[scene.instances[i].mesh];
+                const uvec3 tri = scene.triangles[mesh.first_triangle + primitive];
+                const vec3* v = &world[first_vertex[i]];
+                set_triangle(out, first + k, v[tri.x], v[tri.y], v[tri.z], primitive, i);
+            }
+        });
     out.one_level = true;
 }
 
 // One tree per mesh in object space and, behind them, the top tree over the instances' world
 // boxes.
 void build_two_level(const FlatScene& scene, Builder& builder, BvhBuild& out) {
-    std::vector<vec3> mesh_lo(scene.meshes.size(), vec3(FLOAT_MAX)),
-        mesh_hi(scene.meshes.size(), vec3(-FLOAT_MAX));
+    const bool wide = out.layout == BvhLayout::wide;
+    size_t triangles = 0, instances = 0;
+    for (const MeshInfo& mesh : scene.meshes) triangles += mesh.triangle_count;
+    for (const Instance& inst : scene.instances)
+        instances += scene.meshes[inst.mesh].triangle_count > 0 ? 1 : 0;
+    // The wide layout's top-level items are records too, after the meshes' triangles.
+    if (wide)
+        out.wide_triangles.resize(uint32_t(triangles + instances));
+    else
+        out.triangles.resize(triangles);
+
+    std::vector<RTCBounds> mesh_box(scene.meshes.size());
     for (size_t m = 0; m < scene.meshes.size(); ++m) {
+        const auto t = Clock::now();
         const MeshInfo& mesh = scene.meshes[m];
-        std::vector<RTCBuildPrimitive> prims;
-        prims.reserve(mesh.triangle_count);
-        for (uint32_t t = 0; t < mesh.triangle_count; ++t) {
-            const uvec3 tri = scene.triangles[mesh.first_triangle + t];
-            const vec3 a = scene.positions[mesh.first_vertex + tri.x];
-            const vec3 b = scene.positions[mesh.first_vertex + tri.y];
-            const vec3 c = scene.positions[mesh.first_vertex + tri.z];
-            const vec3 lo = glm::min(a, glm::min(b, c)), hi = glm::max(a, glm::max(b, c));
-            prims.push_back(make_primitive(lo, hi, t));
-            mesh_lo[m] = glm::min(mesh_lo[m], lo);
-            mesh_hi[m] = glm::max(mesh_hi[m], hi);
-        }
+        const vec3* p = &scene.positions[mesh.first_vertex];
+        const uvec3* tris = &scene.triangles[mesh.first_triangle];
+        std::vector<RTCBuildPrimitive> prims(mesh.triangle_count);
+        tbb::parallel_for(
+            tbb::blocked_range<uint32_t>(0, mesh.triangle_count, kGrain), [&](auto r) {
+                for (uint32_t k = r.begin(); k != r.end(); ++k)
+                    prims[k] = triangle_primitive(p[tris[k].x], p[tris[k].y], p[tris[k].z], k);
+            });
+        mesh_box[m] = bounds_of(prims);
+        out.times.primitives_s += seconds_since(t);
         uint32_t depth = 0;
         out.mesh_roots.push_back(builder.build(
-            std::move(prims), kMaxTrianglesPerLeaf, kMaxBottomDepth, depth,
-            [&](const uint32_t* ids, uint32_t n) {
-                uint32_t first = 0;
-                for (uint32_t i = 0; i < n; ++i) {
-                    const uvec3 tri = scene.triangles[mesh.first_triangle + ids[i]];
-                    const vec3* p = &scene.positions[mesh.first_vertex];
-                    const uint32_t k =
-                        add_triangle(out, leaf_triangle(p[tri.x], p[tri.y], p[tri.z], ids[i], 0));
-                    if (i == 0) first = k;
+            std::move(prims), kMaxTrianglesPerLeaf, kMaxBottomDepth, false, depth,
+            [&](const uint32_t* ids, uint32_t count, uint32_t first) {
+                for (uint32_t k = 0; k < count; ++k) {
+                    const uvec3 tri = tris[ids[k]];
+                    set_triangle(out, first + k, p[tri.x], p[tri.y], p[tri.z], ids[k], 0);
                 }
-                return first;
             }));
         out.bottom_depth = std::max(out.bottom_depth, depth);
     }
 
-    std::vector<RTCBuildPrimitive> instances;
+    const auto t = Clock::now();
+    std::vector<RTCBuildPrimitive> boxes;
     for (uint32_t i = 0; i < scene.instances.size(); ++i) {
         const Instance& inst = scene.instances[i];
         if (scene.meshes[inst.mesh].triangle_count == 0) continue;
+        const RTCBounds& b = mesh_box[inst.mesh];
         vec3 lo, hi;
-        world_box(inst, mesh_lo[inst.mesh], mesh_hi[inst.mesh], lo, hi);
-        instances.push_back(make_primitive(lo, hi, i));
+        world_box(inst, vec3(b.lower_x, b.lower_y, b.lower_z),
+                  vec3(b.upper_x, b.upper_y, b.upper_z), lo, hi);
+        boxes.push_back(make_primitive(lo, hi, i));
     }
+    out.times.primitives_s += seconds_since(t);
     // One instance per leaf in both layouts, so that every instance is entered behind its own
     // box: a binary leaf names it directly (count 1), a wide leaf by a record (wide_bvh.h).
-    const bool wide = out.layout == BvhLayout::wide;
-    out.top_root = builder.build(std::move(instances), 1, kMaxTopDepth, out.top_depth,
-                                 [&](const uint32_t* ids, uint32_t) {
-                                     return wide ? out.wide_triangles.add_instance(ids[0]) : ids[0];
+    out.top_root = builder.build(std::move(boxes), 1, kMaxTopDepth, true, out.top_depth,
+                                 [&](const uint32_t* ids, uint32_t, uint32_t first) {
+                                     out.wide_triangles.set_instance(first, ids[0]);
                                  });
 }
 
@@ -254,13 +251,19 @@ BvhBuild build_layout(const FlatScene& scene, uint32_t features, BvhLayout layou
     BvhBuild out;
     out.layout = layout;
     out.requested = layout;
-    Builder builder(out);
-    if (feature_on(features, FEATURE_INSTANCING))
-        build_two_level(scene, builder, out);
-    else
-        build_one_level(scene, builder, out);
+    {
+        Builder builder(out);
+        if (feature_on(features, FEATURE_INSTANCING))
+            build_two_level(scene, builder, out);
+        else
+            build_one_level(scene, builder, out);
+    }
+    auto t = Clock::now();
     if (layout == BvhLayout::wide) out.wide_triangles.finish(out.one_level);
+    out.times.write_s += seconds_since(t);
+    t = Clock::now();
     out.estimate = estimate_bvh_work(out, scene);
+    out.times.estimate_s += seconds_since(t);
     return out;
 }
 
@@ -276,17 +279,33 @@ BvhBuild checked(BvhBuild b) {
     return b;
 }
 
+void add_times(BvhBuildTimes& to, const BvhBuildTimes& t) {
+    to.primitives_s += t.primitives_s;
+    to.embree_s += t.embree_s;
+    to.layout_s += t.layout_s;
+    to.write_s += t.write_s;
+    to.estimate_s += t.estimate_s;
+}
+
 } // namespace
 
 BvhBuild build_bvh(const FlatScene& scene, uint32_t features, BvhLayout layout) {
     if (layout != BvhLayout::automatic) return checked(build_layout(scene, features, layout));
+    // The rule reads the binary tree alone (auto_prefers_wide): the wide tree is built only when
+    // it is chosen, after the binary one is released, so that the host holds one layout at once.
     BvhBuild binary = build_layout(scene, features, BvhLayout::binary);
-    BvhBuild wide = build_layout(scene, features, BvhLayout::wide);
-    const bool pick_wide =
-        fits_stack(wide) && (!fits_stack(binary) || auto_prefers_wide(binary.estimate));
-    BvhBuild& pick = pick_wide ? wide : binary;
+    binary.requested = BvhLayout::automatic;
+    binary.binary_estimate = binary.estimate;
+    const bool binary_fits = fits_stack(binary);
+    if (binary_fits && !auto_prefers_wide(binary.estimate)) return binary;
+    const BvhEstimate binary_estimate = binary.estimate;
+    const BvhBuildTimes times = binary.times;
+    binary = BvhBuild{};
+    BvhBuild pick = build_layout(scene, features, BvhLayout::wide);
+    if (!fits_stack(pick) && binary_fits) pick = build_layout(scene, features, BvhLayout::binary);
     pick.requested = BvhLayout::automatic;
-    pick.other_estimate = (pick_wide ? binary : wide).estimate;
+    pick.binary_estimate = binary_estimate;
+    add_times(pick.times, times);
     return checked(std::move(pick));
 }
 
@@ -296,10 +315,12 @@ std::map<std::string, std::string> bvh_stats(const BvhBuild& bvh) {
     s["bvh_requested"] = bvh_layout_name(bvh.requested);
     s["bvh_levels"] = bvh.one_level ? "1" : "2";
     s["bvh_estimate"] = describe(bvh.estimate);
-    if (bvh.requested == BvhLayout::automatic) {
-        const BvhLayout other = bvh.layout == BvhLayout::wide ? BvhLayout::binary : BvhLayout::wide;
-        s[std::string("bvh_estimate_") + bvh_layout_name(other)] = describe(bvh.other_estimate);
-    }
+    if (bvh.requested == BvhLayout::automatic)
+        s["bvh_estimate_binary"] = describe(bvh.binary_estimate);
+    const BvhBuildTimes& t = bvh.times;
+    s["bvh_build_stages"] =
+        fmt::format("primitives {:.4f} embree {:.4f} layout {:.4f} write {:.4f} estimate {:.4f}",
+                    t.primitives_s, t.embree_s, t.layout_s, t.write_s, t.estimate_s);
     return s;
 }
 

@@ -26,19 +26,31 @@
 
 namespace tp {
 
-// `automatic` (--bvh auto) builds both and keeps the one its rule prefers from their
-// estimated work per ray (bvh_estimate.h); the build it returns has the layout it chose.
+// `automatic` (--bvh auto) builds the binary layout, and the wide one only where its rule
+// prefers it from the binary tree's estimated work per ray (bvh_estimate.h); the build it
+// returns has the layout it chose.
 enum class BvhLayout { binary, wide, automatic };
 
 // "binary", "wide" or "auto" (the --bvh option); InputError for anything else.
 BvhLayout parse_bvh_layout(const std::string& name);
 const char* bvh_layout_name(BvhLayout layout);
 
+// Seconds a build spent in each stage, summed over its trees (and with auto over the layouts it
+// built).
+struct BvhBuildTimes {
+    double primitives_s = 0; // the items' boxes (and with one level the world vertices)
+    double embree_s = 0;     // Embree's binary trees
+    double layout_s = 0;     // the binary tree's sizes, or the wide collapse's program
+    double write_s = 0;      // the nodes and leaf items at their offsets; the wide ID table
+    double estimate_s = 0;   // estimate_bvh_work
+};
+
 struct BvhBuild {
     BvhLayout layout = BvhLayout::binary;    // binary or wide
     BvhLayout requested = BvhLayout::binary; // the layout asked for, or automatic
     BvhEstimate estimate;                    // the per-ray work of these trees
-    BvhEstimate other_estimate;              // automatic: the other layout's
+    BvhEstimate binary_estimate;             // automatic: the binary layout's, which chose
+    BvhBuildTimes times;
     // The nodes of the layout (the other array stays empty); two levels: each mesh's tree,
     // then the top level.
     std::vector<BvhNode> nodes;
@@ -69,8 +81,9 @@ BvhBuild build_bvh(const FlatScene& scene, uint32_t features = FEATURES_ALL,
                    BvhLayout layout = BvhLayout::binary);
 
 // The render statistics' words about the build (RenderStats::extra): bvh_layout (the one
-// built), bvh_requested, bvh_levels (1 or 2), bvh_estimate (bvh_estimate.h) and with auto the
-// other layout's estimate, bvh_estimate_binary or bvh_estimate_wide.
+// built), bvh_requested, bvh_levels (1 or 2), bvh_estimate (bvh_estimate.h), with auto the
+// binary layout's estimate that chose (bvh_estimate_binary), and bvh_build_stages (seconds per
+// stage, BvhBuildTimes).
 std::map<std::string, std::string> bvh_stats(const BvhBuild& bvh);
 
 } // namespace tp

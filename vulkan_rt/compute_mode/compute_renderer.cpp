@@ -11,6 +11,7 @@
 
 #include <chrono>
 #include <memory>
+#include <utility>
 
 // Generated from shaders/render_compute.comp (shaders/spirv.cmake).
 #include "render_compute.spv.h"
@@ -40,15 +41,17 @@ ComputeModules compute_modules(BvhLayout layout) {
 // The compute shader over the BVH arrays it owns (slots 13 and 14).
 class ComputeTracer : public Tracer {
   public:
+    // `buffers`: `bvh` on the device (upload_bvh).
     // `debug`: also build the debug variant (record_debug_launch).
     // `constants`: what the render shader is specialized to (specialization.h).
-    ComputeTracer(const VulkanContext& ctx, const BvhBuild& bvh, bool debug,
+    ComputeTracer(const VulkanContext& ctx, const BvhBuild& bvh, BvhBuffers buffers, bool debug,
                   const RenderConstants& constants)
-        : ComputeTracer(ctx, bvh, debug, constants, compute_modules(bvh.layout)) {}
+        : ComputeTracer(ctx, std::move(buffers), bvh.top_root, debug, constants,
+                        compute_modules(bvh.layout)) {}
 
-    ComputeTracer(const VulkanContext& ctx, const BvhBuild& bvh, bool debug,
+    ComputeTracer(const VulkanContext& ctx, BvhBuffers buffers, uint32_t top_root, bool debug,
                   const RenderConstants& constants, const ComputeModules& modules)
-        : bvh_(upload_bvh(ctx, bvh)), top_root_(bvh.top_root),
+        : bvh_(std::move(buffers)), top_root_(top_root),
           program_(ctx, modules.spirv, modules.bytes, interface_slots(BINDING_COUNT, true),
                    sizeof(BatchParams), constants, true) {
         if (debug) {
@@ -110,16 +113,20 @@ ModeSetup prepare_compute(const VulkanContext& ctx, const FlatScene& scene,
     // instancing, two with it (bvh_builder.h, trace_bvh.glsl).
     const uint32_t features = render_feature_mask(scene, options.all_features);
     check_scene_images(ctx, scene, features); // before any work: a texture may not fit
+    ctx.memory_tally().restart_peak();
     const auto t_build = std::chrono::steady_clock::now();
     const BvhBuild bvh = build_bvh(scene, features, layout);
     ModeSetup m;
     m.accel.build_time_s = seconds_since(t_build);
     m.accel.bytes = bvh.bytes();
     m.accel.extra = bvh_stats(bvh);
+    const auto t_upload = std::chrono::steady_clock::now();
     m.buffers =
         upload_scene(ctx, scene, seeded_params(scene, options), bvh.mesh_roots, 0, features);
+    BvhBuffers bvh_buffers = upload_bvh(ctx, bvh);
+    m.accel.upload_time_s = seconds_since(t_upload);
     auto tracer = std::make_unique<ComputeTracer>(
-        ctx, bvh, options.debug.active() || debug_spirv_overridden(),
+        ctx, bvh, std::move(bvh_buffers), options.debug.active() || debug_spirv_overridden(),
         RenderConstants{features, render_item_schedule(ctx.info(), options.gpu_invocations),
                         m.buffers.images.count});
     add_cache_stats(tracer->cache_use(), m.accel.extra);

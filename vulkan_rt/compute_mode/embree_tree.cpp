@@ -5,18 +5,18 @@
 #include <algorithm>
 #include <new>
 
+#include <tbb/blocked_range.h>
+#include <tbb/parallel_reduce.h>
+
 namespace tp {
 namespace {
 
 // Embree builds into nodes that we allocate through its thread-local allocator (the memory
-// belongs to the RTCBVH object) and hands back the root.
+// belongs to the RTCBVH object) and hands back the root. An inner node is one allocation: the
+// builder is binary (maxBranchingFactor 2).
 void* create_node(RTCThreadLocalAllocator alloc, unsigned int children, void*) {
-    auto* n = new (rtcThreadLocalAlloc(alloc, sizeof(TreeInner), 16)) TreeInner();
-    n->children = children;
-    n->child = static_cast<const TreeNode**>(
-        rtcThreadLocalAlloc(alloc, children * sizeof(TreeNode*), alignof(TreeNode*)));
-    n->bounds = static_cast<RTCBounds*>(
-        rtcThreadLocalAlloc(alloc, children * sizeof(RTCBounds), alignof(RTCBounds)));
+    auto* n = new (rtcThreadLocalAlloc(alloc, sizeof(TreeInner), alignof(TreeInner))) TreeInner();
+    n->children = std::min(children, 2u);
     return n;
 }
 
@@ -24,7 +24,7 @@ void set_children(void* node, void** children, unsigned int n, void*) {
     auto* inner = static_cast<TreeInner*>(node);
     inner->children = std::min<uint32_t>(inner->children, n);
     for (unsigned int i = 0; i < inner->children; ++i)
-        inner->child[i] = static_cast<const TreeNode*>(children[i]);
+        inner->child[i] = static_cast<TreeNode*>(children[i]);
 }
 
 void set_bounds(void* node, const RTCBounds** bounds, unsigned int n, void*) {
@@ -55,17 +55,27 @@ RTCBuildPrimitive make_primitive(vec3 lo, vec3 hi, uint32_t id) {
     return p;
 }
 
+RTCBounds merge_bounds(const RTCBounds& a, const RTCBounds& b) {
+    return RTCBounds{std::min(a.lower_x, b.lower_x), std::min(a.lower_y, b.lower_y),
+                     std::min(a.lower_z, b.lower_z), 0.0f,
+                     std::max(a.upper_x, b.upper_x), std::max(a.upper_y, b.upper_y),
+                     std::max(a.upper_z, b.upper_z), 0.0f};
+}
+
 RTCBounds bounds_of(const std::vector<RTCBuildPrimitive>& prims) {
-    RTCBounds all{FLOAT_MAX, FLOAT_MAX, FLOAT_MAX, 0.0f, -FLOAT_MAX, -FLOAT_MAX, -FLOAT_MAX, 0.0f};
-    for (const RTCBuildPrimitive& p : prims) {
-        all.lower_x = std::min(all.lower_x, p.lower_x);
-        all.lower_y = std::min(all.lower_y, p.lower_y);
-        all.lower_z = std::min(all.lower_z, p.lower_z);
-        all.upper_x = std::max(all.upper_x, p.upper_x);
-        all.upper_y = std::max(all.upper_y, p.upper_y);
-        all.upper_z = std::max(all.upper_z, p.upper_z);
-    }
-    return all;
+    const RTCBounds empty{FLOAT_MAX,  FLOAT_MAX,  FLOAT_MAX,  0.0f,
+                          -FLOAT_MAX, -FLOAT_MAX, -FLOAT_MAX, 0.0f};
+    return tbb::parallel_reduce(
+        tbb::blocked_range<size_t>(0, prims.size(), 4096), empty,
+        [&](const tbb::blocked_range<size_t>& r, RTCBounds all) {
+            for (size_t i = r.begin(); i != r.end(); ++i) {
+                const RTCBuildPrimitive& p = prims[i];
+                all = merge_bounds(all, RTCBounds{p.lower_x, p.lower_y, p.lower_z, 0.0f, p.upper_x,
+                                                  p.upper_y, p.upper_z, 0.0f});
+            }
+            return all;
+        },
+        merge_bounds);
 }
 
 EmbreeTreeBuilder::EmbreeTreeBuilder() {
@@ -78,8 +88,8 @@ EmbreeTreeBuilder::~EmbreeTreeBuilder() {
     rtcReleaseDevice(device_);
 }
 
-const TreeNode* EmbreeTreeBuilder::build(std::vector<RTCBuildPrimitive>& prims, uint32_t max_leaf,
-                                         uint32_t max_depth) {
+TreeNode* EmbreeTreeBuilder::build(std::vector<RTCBuildPrimitive>& prims, uint32_t max_leaf,
+                                   uint32_t max_depth) {
     if (bvh_) rtcReleaseBVH(bvh_);
     bvh_ = rtcNewBVH(device_);
     RTCBuildArguments args = rtcDefaultBuildArguments();
@@ -98,7 +108,7 @@ const TreeNode* EmbreeTreeBuilder::build(std::vector<RTCBuildPrimitive>& prims, 
     args.setNodeChildren = set_children;
     args.setNodeBounds = set_bounds;
     args.createLeaf = create_leaf;
-    auto* root = static_cast<const TreeNode*>(rtcBuildBVH(&args));
+    auto* root = static_cast<TreeNode*>(rtcBuildBVH(&args));
     const RTCError error = rtcGetDeviceError(device_);
     if (!root || error != RTC_ERROR_NONE) {
         if (error == RTC_ERROR_OUT_OF_MEMORY)

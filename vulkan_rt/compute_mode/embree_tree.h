@@ -9,6 +9,8 @@
 #include <embree3/rtcore.h>
 #include <embree3/rtcore_builder.h>
 
+#include <tbb/parallel_invoke.h>
+
 #include <cstdint>
 #include <functional>
 #include <vector>
@@ -20,23 +22,54 @@ namespace tp {
 struct TreeNode {
     uint32_t count = 0; // 0: TreeInner; > 0: TreeLeaf with that many items
 };
+
+// What the passes of a layout (the binary writer, the wide collapse) record at an inner node
+// about the subtree below it, so that the layout's arrays can be sized and then written by
+// subtrees in parallel at offsets known in advance.
+struct TreeScratch {
+    uint32_t items = 0;   // leaf items below
+    uint32_t nodes = 0;   // layout nodes of the subtree rooted here
+    uint32_t depth = 0;   // their levels
+    uint8_t split[8]{};   // wide collapse: the program's choices (wide_collapse.cpp)
+    bool as_leaf = false; // wide collapse: one leaf is this subtree's cheapest slot
+};
+
 struct TreeInner : TreeNode {
     uint32_t children = 0;
-    const TreeNode** child = nullptr;
-    RTCBounds* bounds = nullptr; // child[i]'s box
+    TreeNode* child[2]{};
+    RTCBounds bounds[2]{}; // child[i]'s box
+    TreeScratch scratch;
 };
 struct TreeLeaf : TreeNode {
     uint32_t* items = nullptr; // RTCBuildPrimitive::primID of each item
 };
 
-// Stores a leaf's items (primitive IDs) where the layout keeps them and returns the index of
-// the first; the items of one leaf are stored consecutively.
-using LeafEmitter = std::function<uint32_t(const uint32_t* ids, uint32_t count)>;
+// Writes a leaf's items (primitive IDs) at positions first .. first + count of the layout's item
+// array. The layouts' writers call it for different leaves at once.
+using LeafWriter = std::function<void(const uint32_t* ids, uint32_t count, uint32_t first)>;
+
+// The levels of a tree below which the layouts' passes stop handing the two subtrees of a node
+// to separate tasks: 2^12 tasks keep any core count busy, and a deeper split only adds overhead.
+constexpr uint32_t kParallelLevels = 12;
+
+// Runs a and b, at once when `level` < kParallelLevels.
+template <class A, class B>
+void fork(uint32_t level, A&& a, B&& b) {
+    if (level < kParallelLevels) {
+        tbb::parallel_invoke(a, b);
+    } else {
+        a();
+        b();
+    }
+}
 
 RTCBuildPrimitive make_primitive(vec3 lo, vec3 hi, uint32_t id);
 
-// The box around every primitive's box.
+// The box around every primitive's box (a parallel reduction).
 RTCBounds bounds_of(const std::vector<RTCBuildPrimitive>& prims);
+
+// The box around two boxes.
+RTCBounds merge_bounds(const RTCBounds& a, const RTCBounds& b);
 
 class EmbreeTreeBuilder {
   public:
@@ -46,10 +79,10 @@ class EmbreeTreeBuilder {
     EmbreeTreeBuilder& operator=(const EmbreeTreeBuilder&) = delete;
 
     // Builds a binary tree over `prims` (not empty) with at most `max_leaf` items per leaf and
-    // `max_depth` levels; valid until the next build. The root may be a leaf. Throws
-    // RuntimeError when Embree fails.
-    const TreeNode* build(std::vector<RTCBuildPrimitive>& prims, uint32_t max_leaf,
-                          uint32_t max_depth);
+    // `max_depth` levels, in parallel (Embree's TBB tasks); valid until the next build or the
+    // builder's end. The root may be a leaf. `prims` is reordered. Throws RuntimeError when
+    // Embree fails.
+    TreeNode* build(std::vector<RTCBuildPrimitive>& prims, uint32_t max_leaf, uint32_t max_depth);
 
   private:
     RTCDevice device_ = nullptr;

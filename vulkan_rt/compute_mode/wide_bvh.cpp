@@ -8,13 +8,10 @@
 #include <cmath>
 #include <cstring>
 
+#include <tbb/parallel_for.h>
+
 namespace tp {
 namespace {
-
-struct Child {
-    const WideSlot* slot;
-    RTCBounds bounds;
-};
 
 glm::dvec3 lower(const RTCBounds& b) {
     return {b.lower_x, b.lower_y, b.lower_z};
@@ -29,9 +26,9 @@ glm::dvec3 upper(const RTCBounds& b) {
 // whose centre lies farthest against D_s from the node's centre: least dot(c - centre, D_s),
 // the cost of (child, s). The paper solves the assignment with an auction; this takes the
 // cheapest free (child, slot) pair until every child has a slot.
-std::array<int, 8> assign_slots(const std::vector<Child>& children, glm::dvec3 centre) {
+std::array<int, 8> assign_slots(const WideSlot* children, uint32_t count, glm::dvec3 centre) {
     double cost[8][8];
-    for (size_t c = 0; c < children.size(); ++c) {
+    for (size_t c = 0; c < count; ++c) {
         const glm::dvec3 d = 0.5 * (lower(children[c].bounds) + upper(children[c].bounds)) - centre;
         for (int s = 0; s < 8; ++s)
             cost[c][s] = ((s & 4) ? -d.x : d.x) + ((s & 2) ? -d.y : d.y) + ((s & 1) ? -d.z : d.z);
@@ -39,9 +36,9 @@ std::array<int, 8> assign_slots(const std::vector<Child>& children, glm::dvec3 c
     std::array<int, 8> child_of_slot;
     child_of_slot.fill(-1);
     std::array<bool, 8> placed{};
-    for (size_t k = 0; k < children.size(); ++k) {
+    for (size_t k = 0; k < count; ++k) {
         int best_c = -1, best_s = -1;
-        for (size_t c = 0; c < children.size(); ++c) {
+        for (size_t c = 0; c < count; ++c) {
             if (placed[c]) continue;
             for (int s = 0; s < 8; ++s)
                 if (child_of_slot[s] < 0 && (best_c < 0 || cost[c][s] < cost[best_c][best_s])) {
@@ -90,21 +87,19 @@ void quantize(const AxisFrame& f, double lo, double hi, uint8_t& qlo, uint8_t& q
 
 class WideWriter {
   public:
-    WideWriter(std::vector<WideBvhNode>& nodes, const WideTree& tree, const LeafEmitter& emit_leaf)
-        : nodes_(nodes), tree_(tree), emit_leaf_(emit_leaf) {}
+    explicit WideWriter(WideBvhNode* nodes, const LeafWriter& write_leaf)
+        : nodes_(nodes), write_leaf_(write_leaf) {}
 
-    // Writes tree node `t` as nodes_[index]; its inner children go to the end of nodes_.
-    void write(uint32_t index, uint32_t t, uint32_t level) {
-        depth = std::max(depth, level);
-        const WideTreeNode& node = tree_.nodes[t];
-        std::vector<Child> children;
+    // Writes the wide node of `slots` as nodes_[index], its inner children at `child_base` on,
+    // their subtrees after them, and its leaves' items from `item_base`.
+    void write(const WideSlot* slots, uint32_t count, uint32_t index, uint32_t child_base,
+               uint32_t item_base, uint32_t level) const {
         glm::dvec3 lo(FLOAT_MAX), hi(-FLOAT_MAX);
-        for (uint32_t s = 0; s < node.slots; ++s) {
-            children.push_back({&node.slot[s], node.slot[s].bounds});
-            lo = glm::min(lo, lower(node.slot[s].bounds));
-            hi = glm::max(hi, upper(node.slot[s].bounds));
+        for (uint32_t s = 0; s < count; ++s) {
+            lo = glm::min(lo, lower(slots[s].bounds));
+            hi = glm::max(hi, upper(slots[s].bounds));
         }
-        const std::array<int, 8> child_of_slot = assign_slots(children, 0.5 * (lo + hi));
+        const std::array<int, 8> child_of_slot = assign_slots(slots, count, 0.5 * (lo + hi));
         WideBvhNode n{};
         AxisFrame frame[3];
         for (int a = 0; a < 3; ++a) {
@@ -112,42 +107,56 @@ class WideWriter {
             n.p[a] = float(frame[a].p);
             n.e[a] = uint8_t(frame[a].k + 127);
         }
-        n.child_base = uint32_t(nodes_.size());
+        n.child_base = child_base;
         uint32_t inner = 0, offset = 0;
-        std::vector<std::pair<uint32_t, uint32_t>> pending; // (node index, tree node)
+        const TreeInner* pending[8]; // inner children in slot order
         for (uint32_t s = 0; s < 8; ++s) {
             if (child_of_slot[s] < 0) continue;
-            const Child& c = children[size_t(child_of_slot[s])];
+            const WideSlot& c = slots[child_of_slot[s]];
             for (int a = 0; a < 3; ++a)
                 quantize(frame[a], lower(c.bounds)[a], upper(c.bounds)[a], n.qlo[a][s],
                          n.qhi[a][s]);
-            if (c.slot->count == 0) {
+            if (c.count == 0) {
                 n.meta[s] = uint8_t(CWBVH_META_INNER | s);
                 n.imask = uint8_t(n.imask | (1u << s));
-                pending.push_back({n.child_base + inner++, c.slot->node});
+                pending[inner++] = static_cast<const TreeInner*>(c.node);
                 continue;
             }
-            const uint32_t first = emit_leaf_(&tree_.items[c.slot->first], c.slot->count);
-            if (offset == 0) n.triangle_base = first;
-            // The leaves of one node are stored back to back (the emitters append) and fit the
-            // 24 triangle bits of a hit mask.
-            if (first != n.triangle_base + offset || c.slot->count > CWBVH_MAX_LEAF)
-                runtime_error("wide BVH: leaf items out of order");
-            n.meta[s] = uint8_t(((1u << c.slot->count) - 1u) << 5 | offset);
-            offset += c.slot->count;
+            // A leaf fits the 3 bits of its meta's hit mask; a node's leaves, the 24 triangle bits.
+            if (c.count > CWBVH_MAX_LEAF) runtime_error("wide BVH: a leaf holds too many items");
+            uint32_t items[CWBVH_MAX_LEAF];
+            wide_leaf_items(c.node, items);
+            write_leaf_(items, c.count, item_base + offset);
+            if (offset == 0) n.triangle_base = item_base;
+            n.meta[s] = uint8_t(((1u << c.count) - 1u) << 5 | offset);
+            offset += c.count;
         }
-        nodes_.resize(nodes_.size() + inner);
         nodes_[index] = n;
-        for (const auto& [child_index, tree_node] : pending)
-            write(child_index, tree_node, level + 1);
+        // Child k's subtree: its node at child_base + k, its descendants after the block of
+        // children and the earlier children's descendants; its items after theirs.
+        uint32_t descendants[8], items[8];
+        uint32_t next_node = child_base + inner, next_item = item_base + offset;
+        for (uint32_t k = 0; k < inner; ++k) {
+            descendants[k] = next_node;
+            items[k] = next_item;
+            next_node += pending[k]->scratch.nodes - 1;
+            next_item += pending[k]->scratch.items;
+        }
+        auto child = [&](uint32_t k) {
+            WideSlot child_slots[kWideSlots];
+            const uint32_t count = wide_node_slots(pending[k], child_slots);
+            write(child_slots, count, child_base + k, descendants[k], items[k], level + 1);
+        };
+        if (level < kParallelLevels && inner > 1) {
+            tbb::parallel_for(uint32_t(0), inner, child);
+        } else {
+            for (uint32_t k = 0; k < inner; ++k) child(k);
+        }
     }
 
-    uint32_t depth = 0;
-
   private:
-    std::vector<WideBvhNode>& nodes_;
-    const WideTree& tree_;
-    const LeafEmitter& emit_leaf_;
+    WideBvhNode* nodes_;
+    const LeafWriter& write_leaf_;
 };
 
 // The bits that hold v: 0 for 0.
@@ -165,16 +174,14 @@ glm::uvec4 record_word(vec3 v, float n) {
 
 } // namespace
 
-uint32_t write_wide_tree(std::vector<WideBvhNode>& nodes, const WideTree& tree,
-                         const LeafEmitter& emit_leaf, uint32_t& depth) {
-    const uint32_t index = uint32_t(nodes.size());
-    nodes.push_back(WideBvhNode{}); // no slots: an empty tree, which no ray enters
-    depth = 1;
-    if (tree.nodes[0].slots == 0) return index;
-    WideWriter writer(nodes, tree, emit_leaf);
-    writer.write(index, 0, 1);
-    depth = writer.depth;
-    return index;
+void write_wide_tree(const TreeNode* root, const RTCBounds& bounds, const WideCollapse& c,
+                     WideBvhNode* nodes, uint32_t node_base, uint32_t item_base,
+                     const LeafWriter& write_leaf) {
+    nodes[node_base] = WideBvhNode{};
+    if (!root) return;
+    WideSlot slots[kWideSlots];
+    const uint32_t count = wide_root_slots(root, bounds, c, slots);
+    WideWriter(nodes, write_leaf).write(slots, count, node_base, node_base + 1, item_base, 0);
 }
 
 void wide_child_box(const WideBvhNode& node, uint32_t slot, glm::dvec3& lo, glm::dvec3& hi) {
@@ -185,34 +192,31 @@ void wide_child_box(const WideBvhNode& node, uint32_t slot, glm::dvec3& lo, glm:
     }
 }
 
-void WideTriangleBuffer::start() {
-    if (words_.empty()) words_.push_back(glm::uvec4(0u)); // the header, set by finish()
+void WideTriangleBuffer::resize(uint32_t records) {
+    records_ = records;
+    words_.assign(1 + size_t(CWBVH_TRIANGLE_WORDS) * records, glm::uvec4(0u)); // header first
+    primitive_.assign(records, 0u);
+    instance_.assign(records, 0u);
 }
 
-uint32_t WideTriangleBuffer::add_triangle(vec3 v0, vec3 v1, vec3 v2, uint32_t primitive,
-                                          uint32_t instance) {
-    start();
+void WideTriangleBuffer::set_triangle(uint32_t record, vec3 v0, vec3 v1, vec3 v2,
+                                      uint32_t primitive, uint32_t instance) {
     const vec3 n = triangle_plane_normal(v0, v1, v2);
-    words_.push_back(record_word(v0, n.x));
-    words_.push_back(record_word(v1, n.y));
-    words_.push_back(record_word(v2, n.z));
-    primitive_.push_back(primitive);
-    instance_.push_back(instance);
-    return records_++;
+    glm::uvec4* w = &words_[1 + size_t(CWBVH_TRIANGLE_WORDS) * record];
+    w[0] = record_word(v0, n.x);
+    w[1] = record_word(v1, n.y);
+    w[2] = record_word(v2, n.z);
+    primitive_[record] = primitive;
+    instance_[record] = instance;
 }
 
-uint32_t WideTriangleBuffer::add_instance(uint32_t instance) {
-    start();
-    words_.push_back(glm::uvec4(instance, 0u, 0u, 0u));
-    words_.push_back(glm::uvec4(0u));
-    words_.push_back(glm::uvec4(0u));
-    primitive_.push_back(0u);
-    instance_.push_back(instance);
-    return records_++;
+void WideTriangleBuffer::set_instance(uint32_t record, uint32_t instance) {
+    words_[1 + size_t(CWBVH_TRIANGLE_WORDS) * record] = glm::uvec4(instance, 0u, 0u, 0u);
+    instance_[record] = instance;
 }
 
 void WideTriangleBuffer::finish(bool one_level) {
-    start();
+    if (words_.empty()) resize(0);
     // One uint per record, primitive << bits | instance, where the instance's bits and the
     // primitive's fit 32 (always with two levels, whose IDs are primitives alone); else two.
     uint32_t bits = 0, primitive_bits = 0;

@@ -37,10 +37,15 @@ static_assert(sizeof(WideBvhNode) == 16 * CWBVH_NODE_WORDS, "WideBvhNode is 80 b
 // scales so that double holds these sums exactly).
 void wide_child_box(const WideBvhNode& node, uint32_t slot, glm::dvec3& lo, glm::dvec3& hi);
 
-// Appends the nodes of `tree` to `nodes` and returns the root's index; `depth`: node levels.
-// `emit_leaf` stores a leaf's items as records (the items of one node back to back).
-uint32_t write_wide_tree(std::vector<WideBvhNode>& nodes, const WideTree& tree,
-                         const LeafEmitter& emit_leaf, uint32_t& depth);
+// Writes the tree that collapse_to_wide chose over the binary tree `root` (nullptr: empty; box
+// `bounds`) as nodes[node_base .. node_base + c.nodes), the root first, with its leaf items at
+// item_base .. item_base + c.items (written by `write_leaf`; the items of one node back to back).
+// Depth first, as a serial writer would append: a node, then the block of its inner children,
+// then each child's subtree in slot order; the subtrees are written in parallel at offsets from
+// their sizes (TreeScratch). An empty tree is a root without slots, which no ray enters.
+void write_wide_tree(const TreeNode* root, const RTCBounds& bounds, const WideCollapse& c,
+                     WideBvhNode* nodes, uint32_t node_base, uint32_t item_base,
+                     const LeafWriter& write_leaf);
 
 // A triangle record as the traversal reads it.
 struct WideTriangle {
@@ -49,13 +54,16 @@ struct WideTriangle {
 };
 
 // The triangle buffer (BINDING_BVH_TRIS) of the wide layout, 16-byte words (cwbvh.h); empty
-// until the first record (a binary build holds none).
+// until sized (a binary build holds none).
 class WideTriangleBuffer {
   public:
-    // Appends a record and returns its index.
-    uint32_t add_triangle(vec3 v0, vec3 v1, vec3 v2, uint32_t primitive, uint32_t instance);
-    uint32_t add_instance(uint32_t instance); // a top-level item
-    // Appends the ID table (cwbvh.h); no record may be added after.
+    // Makes room for `records` records, before any is set.
+    void resize(uint32_t records);
+    // Sets record `record`; different records may be set at once.
+    void set_triangle(uint32_t record, vec3 v0, vec3 v1, vec3 v2, uint32_t primitive,
+                      uint32_t instance);
+    void set_instance(uint32_t record, uint32_t instance); // a top-level item
+    // Appends the ID table (cwbvh.h); no record may be set after.
     void finish(bool one_level);
 
     const std::vector<glm::uvec4>& words() const { return words_; }
@@ -68,7 +76,6 @@ class WideTriangleBuffer {
     uint32_t instance(uint32_t record) const; // one level
 
   private:
-    void start();                      // the header word, before the first record
     uint32_t id(uint32_t index) const; // uint `index` of the ID table
     std::vector<glm::uvec4> words_;
     std::vector<uint32_t> primitive_, instance_; // until finish()

@@ -4,13 +4,13 @@
 
 #include <algorithm>
 #include <array>
+#include <iterator>
 #include <limits>
 
 namespace tp {
 namespace {
 
 constexpr double kInfinity = std::numeric_limits<double>::infinity();
-constexpr uint32_t kNone = 0xFFFFFFFFu;
 
 // A cost and, to break its ties, the wide nodes it takes: where subtrees are flat (zero area)
 // every choice costs 0, and the fewest nodes are the fullest, which keeps the tree shallow.
@@ -21,179 +21,125 @@ struct Cost {
     bool operator<(const Cost& o) const { return sah < o.sah || (sah == o.sah && nodes < o.nodes); }
 };
 
-// A node of the binary tree in an array, parents before children.
-struct BinaryNode {
-    RTCBounds bounds;
-    const TreeNode* node;
-    uint32_t left = kNone, right = kNone; // inner nodes
-    uint32_t primitives = 0;              // items below
-};
+using Costs = std::array<Cost, kWideSlots - 1>; // cost(n, i) for i = 1..7
 
-class Collapse {
-  public:
-    Collapse(const TreeNode* root, const RTCBounds& bounds, uint32_t max_leaf)
-        : max_leaf_(max_leaf) {
-        flatten(root, bounds);
-        solve();
-    }
-
-    WideTree tree() {
-        WideTree out;
-        out.bounds = bins_[0].bounds;
-        out.nodes.emplace_back();
-        const BinaryNode& root = bins_[0];
-        const double area = half_area(root.bounds);
-        out.cost = kCollapseNodeCost * area;
-        if (root.left == kNone || root_as_leaf_) {
-            add_slot(out, 0, 0);
-            out.cost += kCollapsePrimitiveCost * area * root.primitives;
-        } else {
-            const double inner = fill(out, 0, 0);
-            out.cost += inner;
+// Adds the roots of the forest of at most i trees that cost(n, i) stands for (n's box: b).
+void forest(const TreeNode* n, const RTCBounds& b, uint32_t i, WideSlot* roots, uint32_t& count) {
+    if (n->count == 0) {
+        const auto* inner = static_cast<const TreeInner*>(n);
+        const uint8_t* split = inner->scratch.split;
+        while (i > 1 && split[i - 1] == 0) --i;
+        if (i > 1) {
+            const uint32_t k = split[i - 1];
+            forest(inner->child[0], inner->bounds[0], k, roots, count);
+            forest(inner->child[1], inner->bounds[1], i - k, roots, count);
+            return;
         }
-        return out;
+    }
+    WideSlot& s = roots[count++];
+    s.node = n;
+    s.bounds = b;
+    s.count = 0;
+    if (n->count > 0)
+        s.count = n->count;
+    else if (static_cast<const TreeInner*>(n)->scratch.as_leaf)
+        s.count = static_cast<const TreeInner*>(n)->scratch.items;
+}
+
+// The 8-slot forest of inner node n's children: the slots of the wide node n stands for.
+uint32_t node_slots(const TreeInner* n, WideSlot slots[kWideSlots]) {
+    uint32_t count = 0;
+    const uint32_t k = n->scratch.split[kWideSlots - 1];
+    forest(n->child[0], n->bounds[0], k, slots, count);
+    forest(n->child[1], n->bounds[1], kWideSlots - k, slots, count);
+    return count;
+}
+
+class Program {
+  public:
+    explicit Program(uint32_t max_leaf) : max_leaf_(max_leaf) {}
+
+    // cost(n, i) for i = 1..7 of n (box `b`). Inner nodes keep in their scratch: split[j - 1],
+    // the k of dist(n, j) when cost(n, j) distributes (j = 2..7) or of the inner node's
+    // dist(n, 8) (j = 8), 0 when cost(n, j) = cost(n, j - 1); as_leaf: cost(n, 1) is the leaf;
+    // items; and the wide nodes and levels below n as a wide node. `forest_cost`: dist(n, 8).
+    Costs solve(TreeNode* n, const RTCBounds& b, uint32_t level, Cost* forest_cost = nullptr) {
+        const double area = half_area(b);
+        Costs cost;
+        if (n->count > 0) {
+            if (n->count > max_leaf_) runtime_error("wide BVH: a binary leaf holds too many items");
+            cost.fill({kCollapsePrimitiveCost * area * n->count, 0});
+            return cost;
+        }
+        auto* inner = static_cast<TreeInner*>(n);
+        if (inner->children != 2) runtime_error("wide BVH: the tree to collapse is not binary");
+        Costs l, r;
+        fork(
+            level, [&] { l = solve(inner->child[0], inner->bounds[0], level + 1); },
+            [&] { r = solve(inner->child[1], inner->bounds[1], level + 1); });
+        TreeScratch& s = inner->scratch;
+        s.items = items(inner->child[0]) + items(inner->child[1]);
+        std::fill(std::begin(s.split), std::end(s.split), uint8_t(0));
+        // dist(n, j) and its best k.
+        auto dist = [&](uint32_t j, uint8_t& best) {
+            Cost d{kInfinity, 0};
+            for (uint32_t k = j > 7 ? j - 7 : 1; k < j && k <= 7; ++k) {
+                const Cost c = l[k - 1] + r[j - k - 1];
+                if (c < d) {
+                    d = c;
+                    best = uint8_t(k);
+                }
+            }
+            return d;
+        };
+        const Cost leaf = s.items <= max_leaf_ ? Cost{kCollapsePrimitiveCost * area * s.items, 0}
+                                               : Cost{kInfinity, 0};
+        const Cost forest = dist(kWideSlots, s.split[kWideSlots - 1]);
+        const Cost as_inner = Cost{kCollapseNodeCost * area, 1} + forest;
+        s.as_leaf = !(as_inner < leaf);
+        cost[0] = s.as_leaf ? leaf : as_inner;
+        for (uint32_t i = 2; i < kWideSlots; ++i) {
+            uint8_t k = 0;
+            const Cost d = dist(i, k);
+            if (d < cost[i - 2]) {
+                cost[i - 1] = d;
+                s.split[i - 1] = k;
+            } else {
+                cost[i - 1] = cost[i - 2];
+            }
+        }
+        WideSlot slots[kWideSlots];
+        const uint32_t count = node_slots(inner, slots);
+        s.nodes = 1;
+        s.depth = 1;
+        for (uint32_t i = 0; i < count; ++i) {
+            if (slots[i].count > 0) continue;
+            const TreeScratch& c = static_cast<const TreeInner*>(slots[i].node)->scratch;
+            s.nodes += c.nodes;
+            s.depth = std::max(s.depth, c.depth + 1);
+        }
+        if (forest_cost) *forest_cost = forest;
+        return cost;
     }
 
   private:
-    void flatten(const TreeNode* n, const RTCBounds& bounds) {
-        const uint32_t index = uint32_t(bins_.size());
-        bins_.push_back({bounds, n});
-        if (n->count > 0) {
-            if (n->count > max_leaf_) runtime_error("wide BVH: a binary leaf holds too many items");
-            bins_[index].primitives = n->count;
-            return;
-        }
-        const auto* inner = static_cast<const TreeInner*>(n);
-        if (inner->children != 2) runtime_error("wide BVH: the tree to collapse is not binary");
-        const uint32_t left = uint32_t(bins_.size());
-        flatten(inner->child[0], inner->bounds[0]);
-        const uint32_t right = uint32_t(bins_.size());
-        flatten(inner->child[1], inner->bounds[1]);
-        BinaryNode& b = bins_[index];
-        b.left = left;
-        b.right = right;
-        b.primitives = bins_[left].primitives + bins_[right].primitives;
-    }
-
-    // cost_[n][i - 1] = cost(n, i) for i = 1..7; split_[n][j - 1] = the k of dist(n, j) when
-    // cost(n, j) distributes (j = 2..7) or of the inner node's dist(n, 8) (j = 8), 0 when
-    // cost(n, j) = cost(n, j - 1); leaf_[n]: cost(n, 1) is the leaf.
-    void solve() {
-        const Cost none{kInfinity, 0};
-        cost_.resize(bins_.size());
-        split_.resize(bins_.size());
-        leaf_.resize(bins_.size());
-        for (size_t n = bins_.size(); n-- > 0;) {
-            const BinaryNode& b = bins_[n];
-            const double area = half_area(b.bounds);
-            auto& cost = cost_[n];
-            auto& split = split_[n];
-            split.fill(0);
-            if (b.left == kNone) {
-                cost.fill({kCollapsePrimitiveCost * area * b.primitives, 0});
-                leaf_[n] = true;
-                continue;
-            }
-            const auto& l = cost_[b.left];
-            const auto& r = cost_[b.right];
-            // dist(n, j) and its best k.
-            auto dist = [&](uint32_t j, uint8_t& best) {
-                Cost d = none;
-                for (uint32_t k = j > 7 ? j - 7 : 1; k < j && k <= 7; ++k) {
-                    const Cost c = l[k - 1] + r[j - k - 1];
-                    if (c < d) {
-                        d = c;
-                        best = uint8_t(k);
-                    }
-                }
-                return d;
-            };
-            const Cost leaf = b.primitives <= max_leaf_
-                                  ? Cost{kCollapsePrimitiveCost * area * b.primitives, 0}
-                                  : none;
-            const Cost forest = dist(kWideSlots, split[kWideSlots - 1]);
-            const Cost inner = Cost{kCollapseNodeCost * area, 1} + forest;
-            leaf_[n] = !(inner < leaf);
-            cost[0] = leaf_[n] ? leaf : inner;
-            for (uint32_t i = 2; i < kWideSlots; ++i) {
-                uint8_t k = 0;
-                const Cost d = dist(i, k);
-                if (d < cost[i - 2]) {
-                    cost[i - 1] = d;
-                    split[i - 1] = k;
-                } else {
-                    cost[i - 1] = cost[i - 2];
-                }
-            }
-            if (n == 0) root_as_leaf_ = !(forest < leaf);
-        }
-    }
-
-    // The roots of the forest of at most i trees that cost(n, i) stands for.
-    void forest(uint32_t n, uint32_t i, std::vector<uint32_t>& roots) const {
-        const BinaryNode& b = bins_[n];
-        while (i > 1 && split_[n][i - 1] == 0) --i;
-        if (b.left == kNone || i == 1) {
-            roots.push_back(n);
-            return;
-        }
-        const uint32_t k = split_[n][i - 1];
-        forest(b.left, k, roots);
-        forest(b.right, i - k, roots);
-    }
-
-    // Fills wide node `w` with the 8-slot forest of binary node n's children and returns its
-    // cost without n's own node term.
-    double fill(WideTree& out, uint32_t w, uint32_t n) {
-        std::vector<uint32_t> roots;
-        const uint32_t k = split_[n][kWideSlots - 1];
-        forest(bins_[n].left, k, roots);
-        forest(bins_[n].right, kWideSlots - k, roots);
-        double cost = 0.0;
-        for (const uint32_t r : roots) cost += add_slot(out, w, r);
-        return cost;
-    }
-
-    // Appends binary node n to wide node w as a leaf or a new inner node; returns cost(n, 1).
-    double add_slot(WideTree& out, uint32_t w, uint32_t n) {
-        const BinaryNode& b = bins_[n];
-        WideSlot s;
-        s.bounds = b.bounds;
-        const double area = half_area(b.bounds);
-        double cost;
-        if (leaf_[n]) {
-            s.count = b.primitives;
-            s.first = uint32_t(out.items.size());
-            collect(n, out.items);
-            cost = kCollapsePrimitiveCost * area * b.primitives;
-        } else {
-            s.node = uint32_t(out.nodes.size());
-            out.nodes.emplace_back();
-            cost = kCollapseNodeCost * area + fill(out, s.node, n);
-        }
-        WideTreeNode& node = out.nodes[w];
-        node.slot[node.slots++] = s;
-        return cost;
-    }
-
-    void collect(uint32_t n, std::vector<uint32_t>& items) const {
-        const BinaryNode& b = bins_[n];
-        if (b.left == kNone) {
-            const auto* leaf = static_cast<const TreeLeaf*>(b.node);
-            items.insert(items.end(), leaf->items, leaf->items + leaf->count);
-            return;
-        }
-        collect(b.left, items);
-        collect(b.right, items);
+    static uint32_t items(const TreeNode* n) {
+        return n->count > 0 ? n->count : static_cast<const TreeInner*>(n)->scratch.items;
     }
 
     uint32_t max_leaf_;
-    std::vector<BinaryNode> bins_;
-    std::vector<std::array<Cost, kWideSlots - 1>> cost_;
-    std::vector<std::array<uint8_t, kWideSlots>> split_;
-    std::vector<bool> leaf_;
-    bool root_as_leaf_ = false;
 };
+
+void collect(const TreeNode* n, uint32_t*& out) {
+    if (n->count > 0) {
+        const auto* leaf = static_cast<const TreeLeaf*>(n);
+        out = std::copy(leaf->items, leaf->items + leaf->count, out);
+        return;
+    }
+    const auto* inner = static_cast<const TreeInner*>(n);
+    collect(inner->child[0], out);
+    collect(inner->child[1], out);
+}
 
 } // namespace
 
@@ -204,27 +150,53 @@ double half_area(const RTCBounds& b) {
     return dx * dy + dy * dz + dz * dx;
 }
 
-WideTree collapse_to_wide(const TreeNode* root, const RTCBounds& bounds, uint32_t max_leaf) {
-    if (!root) {
-        WideTree empty;
-        empty.nodes.emplace_back();
-        empty.bounds = bounds;
-        return empty;
+WideCollapse collapse_to_wide(TreeNode* root, const RTCBounds& bounds, uint32_t max_leaf) {
+    WideCollapse c;
+    c.nodes = 1;
+    c.depth = 1;
+    if (!root) return c;
+    const double area = half_area(bounds);
+    c.cost = kCollapseNodeCost * area;
+    if (root->count > 0) {
+        if (root->count > max_leaf) runtime_error("wide BVH: a binary leaf holds too many items");
+        c.items = root->count;
+        c.root_as_leaf = true;
+        c.cost += kCollapsePrimitiveCost * area * c.items;
+        return c;
     }
-    return Collapse(root, bounds, max_leaf).tree();
+    Cost forest;
+    Program(max_leaf).solve(root, bounds, 0, &forest);
+    const TreeScratch& s = static_cast<const TreeInner*>(root)->scratch;
+    c.items = s.items;
+    c.root_as_leaf =
+        s.items <= max_leaf && !(forest < Cost{kCollapsePrimitiveCost * area * s.items, 0});
+    if (c.root_as_leaf) {
+        c.cost += kCollapsePrimitiveCost * area * s.items;
+    } else {
+        c.cost += forest.sah;
+        c.nodes = s.nodes;
+        c.depth = s.depth;
+    }
+    return c;
 }
 
-double wide_tree_cost(const WideTree& tree) {
-    if (tree.nodes.empty() || tree.nodes[0].slots == 0) return 0.0;
-    double cost = kCollapseNodeCost * half_area(tree.bounds);
-    for (const WideTreeNode& n : tree.nodes)
-        for (uint32_t s = 0; s < n.slots; ++s) {
-            const WideSlot& slot = n.slot[s];
-            const double area = half_area(slot.bounds);
-            cost += slot.count > 0 ? kCollapsePrimitiveCost * area * slot.count
-                                   : kCollapseNodeCost * area;
-        }
-    return cost;
+uint32_t wide_root_slots(const TreeNode* root, const RTCBounds& bounds, const WideCollapse& c,
+                         WideSlot slots[kWideSlots]) {
+    if (root->count > 0 || c.root_as_leaf) {
+        slots[0].node = root;
+        slots[0].bounds = bounds;
+        slots[0].count = c.items;
+        return 1;
+    }
+    return node_slots(static_cast<const TreeInner*>(root), slots);
+}
+
+uint32_t wide_node_slots(const TreeInner* n, WideSlot slots[kWideSlots]) {
+    return node_slots(n, slots);
+}
+
+void wide_leaf_items(const TreeNode* n, uint32_t* out) {
+    collect(n, out);
 }
 
 } // namespace tp

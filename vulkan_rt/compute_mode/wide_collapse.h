@@ -14,13 +14,14 @@
 //
 // with P(n) the primitives below n. The binary tree comes from Embree (embree_tree.h: binned SAH,
 // the binary layout's builder) with leaves of one item, so that the program, not Embree,
-// chooses how triangles group into leaves.
+// chooses how triangles group into leaves. The program runs over subtrees in parallel and
+// leaves its choices in the binary tree's inner nodes (TreeScratch): the wide tree is read from
+// them slot by slot (wide_root_slots, wide_node_slots) by its writer (wide_bvh.h).
 #pragma once
 
 #include "vulkan_rt/compute_mode/embree_tree.h"
 
 #include <cstdint>
-#include <vector>
 
 namespace tp {
 
@@ -29,37 +30,42 @@ constexpr double kCollapseNodeCost = 1.0;
 constexpr double kCollapsePrimitiveCost = 0.3;
 constexpr uint32_t kWideSlots = 8;
 
-// One child of a wide node: an inner node or a leaf of `count` items.
+// The chosen wide tree as a whole.
+struct WideCollapse {
+    double cost = 0.0;         // the program's C for it
+    uint32_t nodes = 0;        // wide nodes (an empty tree: one node without slots)
+    uint32_t items = 0;        // leaf items
+    uint32_t depth = 0;        // node levels
+    bool root_as_leaf = false; // the root holds a single leaf slot with every item
+};
+
+// One child of a wide node: the binary subtree `node` with its box, as a leaf of `count` items
+// (those below node, left to right: wide_leaf_items) or, with count 0, as a wide node of its
+// own whose slots wide_node_slots lists (node is then a TreeInner; its scratch holds the wide
+// nodes, items and levels of its wide subtree).
 struct WideSlot {
-    RTCBounds bounds;
-    uint32_t count = 0; // 0: inner child `node`; > 0: a leaf, items[first .. first + count)
-    uint32_t node = 0;
-    uint32_t first = 0;
-};
-
-struct WideTreeNode {
-    uint32_t slots = 0;
-    WideSlot slot[kWideSlots];
-};
-
-struct WideTree {
-    std::vector<WideTreeNode> nodes; // nodes[0] is the root; an empty tree has a root of 0 slots
-    std::vector<uint32_t> items;     // leaf items (the binary leaves' primitive IDs)
-    RTCBounds bounds;                // the root's box
-    double cost = 0.0;               // the program's C for the returned tree
+    const TreeNode* node = nullptr;
+    RTCBounds bounds{};
+    uint32_t count = 0;
 };
 
 // The surface area of a box over 2 (0 for an empty or flat-enough box).
 double half_area(const RTCBounds& b);
 
-// The least-cost 8-wide tree over the binary tree `root` (nullptr: empty), whose box is
-// `bounds`, with at most `max_leaf` items per leaf (Embree's leaves must not hold more). The
-// root is always a wide node: a single leaf slot where one leaf is cheapest. Where costs tie
-// the program takes the choice with fewer wide nodes, which keeps flat (zero-area) subtrees
-// shallow. Throws RuntimeError when the tree is not binary.
-WideTree collapse_to_wide(const TreeNode* root, const RTCBounds& bounds, uint32_t max_leaf);
+// Runs the program over the binary tree `root` (nullptr: empty), whose box is `bounds`, with at
+// most `max_leaf` items per leaf (Embree's leaves must not hold more). The root is always a wide
+// node: a single leaf slot where one leaf is cheapest. Where costs tie the program takes the
+// choice with fewer wide nodes, which keeps flat (zero-area) subtrees shallow. Throws
+// RuntimeError when the tree is not binary.
+WideCollapse collapse_to_wide(TreeNode* root, const RTCBounds& bounds, uint32_t max_leaf);
 
-// C of a wide tree evaluated from its boxes: what the program minimized.
-double wide_tree_cost(const WideTree& tree);
+// The slots of the chosen tree's root (root not null), and of the wide node an inner slot
+// stands for; each returns the number of slots (1 to 8).
+uint32_t wide_root_slots(const TreeNode* root, const RTCBounds& bounds, const WideCollapse& c,
+                         WideSlot slots[kWideSlots]);
+uint32_t wide_node_slots(const TreeInner* n, WideSlot slots[kWideSlots]);
+
+// The items of the binary leaves below n, left to right.
+void wide_leaf_items(const TreeNode* n, uint32_t* out);
 
 } // namespace tp

@@ -32,6 +32,9 @@ Buffer::Buffer(const VulkanContext& ctx, VkDeviceSize size, VkBufferUsageFlags u
         ai.allocationSize = req.size;
         ai.memoryTypeIndex = ctx.memory_type(req.memoryTypeBits, required, preferred);
         vk_check(vkAllocateMemory(device_, &ai, nullptr, &memory_), "allocating buffer memory");
+        tally_ = &ctx.memory_tally();
+        tallied_ = ctx.counts_as_device_memory(ai.memoryTypeIndex) ? req.size : 0;
+        tally_->add(tallied_);
         vk_check(vkBindBufferMemory(device_, buffer_, memory_, 0), "binding buffer memory");
         if (host)
             vk_check(vkMapMemory(device_, memory_, 0, VK_WHOLE_SIZE, 0, &mapped_),
@@ -58,6 +61,8 @@ Buffer& Buffer::operator=(Buffer&& o) noexcept {
         memory_ = std::exchange(o.memory_, VK_NULL_HANDLE);
         size_ = std::exchange(o.size_, 0);
         mapped_ = std::exchange(o.mapped_, nullptr);
+        tally_ = std::exchange(o.tally_, nullptr);
+        tallied_ = std::exchange(o.tallied_, 0);
     }
     return *this;
 }
@@ -66,6 +71,9 @@ void Buffer::release() {
     if (!device_) return;
     if (buffer_) vkDestroyBuffer(device_, buffer_, nullptr);
     if (memory_) vkFreeMemory(device_, memory_, nullptr); // also unmaps
+    if (tally_) tally_->remove(tallied_);
+    tally_ = nullptr;
+    tallied_ = 0;
     buffer_ = VK_NULL_HANDLE;
     memory_ = VK_NULL_HANDLE;
     mapped_ = nullptr;

@@ -35,6 +35,8 @@ class Buffer {
     VkDeviceMemory memory_ = VK_NULL_HANDLE;
     VkDeviceSize size_ = 0;
     void* mapped_ = nullptr;
+    MemoryTally* tally_ = nullptr;
+    VkDeviceSize tallied_ = 0; // the allocation's bytes in tally_ (0: not device memory)
 };
 
 // Collects uploads and performs them with one command buffer on flush().

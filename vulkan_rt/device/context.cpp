@@ -264,6 +264,11 @@ uint32_t VulkanContext::memory_type(uint32_t type_bits, VkMemoryPropertyFlags re
     return uint32_t(fallback);
 }
 
+bool VulkanContext::counts_as_device_memory(uint32_t memory_type) const {
+    const uint32_t heap = memory_.memoryTypes[memory_type].heapIndex;
+    return (memory_.memoryHeaps[heap].flags & VK_MEMORY_HEAP_DEVICE_LOCAL_BIT) != 0;
+}
+
 void VulkanContext::submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const {
     VkCommandBufferAllocateInfo ai{};
     ai.sType = VK_STRUCTURE_TYPE_COMMAND_BUFFER_ALLOCATE_INFO;

@@ -5,6 +5,7 @@
 #pragma once
 
 #include "vulkan_rt/device/device_info.h"
+#include "vulkan_rt/device/memory_tally.h"
 #include "vulkan_rt/device/validation.h"
 
 #include <vulkan/vulkan.h>
@@ -82,6 +83,13 @@ class VulkanContext {
     // has `preferred`; throws RuntimeError when there is none.
     uint32_t memory_type(uint32_t type_bits, VkMemoryPropertyFlags required,
                          VkMemoryPropertyFlags preferred = 0) const;
+    // Whether allocations of `memory_type` count as device memory: those of a device-local heap,
+    // the memory a GPU runs out of. A discrete GPU's staging buffers in host memory do not count;
+    // on lavapipe the one heap is device-local, so everything does.
+    bool counts_as_device_memory(uint32_t memory_type) const;
+    // The device memory held through this context (memory_tally.h). Bookkeeping, not state of
+    // the device: the buffers of a const context add to it.
+    MemoryTally& memory_tally() const { return memory_tally_; }
 
     // Records commands into a fresh primary command buffer, submits it and waits.
     void submit_and_wait(const std::function<void(VkCommandBuffer)>& record) const;
@@ -104,6 +112,7 @@ class VulkanContext {
     VkSurfaceKHR surface_ = VK_NULL_HANDLE;
     VkCommandPool pool_ = VK_NULL_HANDLE;
     VkFence fence_ = VK_NULL_HANDLE;
+    mutable MemoryTally memory_tally_;
 };
 
 } // namespace tp

@@ -35,6 +35,9 @@ Image::Image(const VulkanContext& ctx, uint32_t width, uint32_t height, VkFormat
         ai.memoryTypeIndex =
             ctx.memory_type(req.memoryTypeBits, 0, VK_MEMORY_PROPERTY_DEVICE_LOCAL_BIT);
         vk_check(vkAllocateMemory(device_, &ai, nullptr, &memory_), "allocating image memory");
+        tally_ = &ctx.memory_tally();
+        tallied_ = ctx.counts_as_device_memory(ai.memoryTypeIndex) ? req.size : 0;
+        tally_->add(tallied_);
         vk_check(vkBindImageMemory(device_, image_, memory_, 0), "binding image memory");
 
         VkImageViewCreateInfo vi{};
@@ -68,6 +71,8 @@ Image& Image::operator=(Image&& o) noexcept {
         width_ = std::exchange(o.width_, 0);
         height_ = std::exchange(o.height_, 0);
         memory_bytes_ = std::exchange(o.memory_bytes_, 0);
+        tally_ = std::exchange(o.tally_, nullptr);
+        tallied_ = std::exchange(o.tallied_, 0);
     }
     return *this;
 }
@@ -77,6 +82,9 @@ void Image::release() {
     if (view_) vkDestroyImageView(device_, view_, nullptr);
     if (image_) vkDestroyImage(device_, image_, nullptr);
     if (memory_) vkFreeMemory(device_, memory_, nullptr);
+    if (tally_) tally_->remove(tallied_);
+    tally_ = nullptr;
+    tallied_ = 0;
     view_ = VK_NULL_HANDLE;
     image_ = VK_NULL_HANDLE;
     memory_ = VK_NULL_HANDLE;

@@ -34,6 +34,8 @@ class Image {
     VkImageView view_ = VK_NULL_HANDLE;
     uint32_t width_ = 0, height_ = 0;
     VkDeviceSize memory_bytes_ = 0;
+    MemoryTally* tally_ = nullptr;
+    VkDeviceSize tallied_ = 0; // memory_bytes_ when it counts as device memory, else 0
 };
 
 // An image's texels on the host: rows top to bottom, tightly packed, `texel_bytes` each.

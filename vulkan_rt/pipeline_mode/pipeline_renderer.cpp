@@ -85,9 +85,12 @@ ModeSetup prepare_pipeline(const VulkanContext& ctx, const FlatScene& scene,
     const uint32_t features = render_feature_mask(scene, options.all_features);
     check_scene_images(ctx, scene, features); // before any work: a texture may not fit
     auto rt = std::make_unique<RtFunctions>(ctx.device());
+    ctx.memory_tally().restart_peak();
     ModeSetup m;
+    const auto t_upload = std::chrono::steady_clock::now();
     m.buffers =
         upload_scene(ctx, scene, seeded_params(scene, options), {}, kAccelInputUsage, features);
+    m.accel.upload_time_s = seconds_since(t_upload);
     const auto t_build = std::chrono::steady_clock::now();
     auto as = std::make_unique<AccelStructures>(ctx, *rt, scene, m.buffers);
     m.accel.build_time_s = seconds_since(t_build);

@@ -2,9 +2,11 @@
 // submission comes near a display watchdog (Windows TDR: 2 s) and --time-limit and progress
 // stay responsive. A pass traces `samples` samples of every pixel, as one submission or as
 // bands of rows; the work of the next submission (pixels x samples) follows the throughput
-// measured on the previous ones, changing by at most 4x at a time. A device that had to cut a
-// batch short (lavapipe's per-invocation loop budget, shaders/render_items.glsl) gets at most
-// half as many samples per pixel in the batches after it.
+// measured on the previous ones, changing by at most 4x at a time. A pass that the measured
+// throughput finishes within `whole_pass_seconds` is never split into bands, however short
+// `target_seconds` is (the viewer: a frame is the whole image unless that takes too long). A
+// device that had to cut a batch short (lavapipe's per-invocation loop budget,
+// shaders/render_items.glsl) gets at most half as many samples per pixel in the batches after it.
 #pragma once
 
 #include <cstdint>
@@ -22,8 +24,11 @@ class BatchPlanner {
   public:
     // `initial_work`: pixel-samples of the first submission; a render of several ranges passes
     // on what the previous range's planner learnt (work()). `max_work`: of any submission.
+    // `whole_pass_seconds`: the longest a pass of one sample per pixel may take, at the
+    // throughput measured so far, and still be one batch (0: as long as target_seconds).
     BatchPlanner(uint32_t width, uint32_t height, uint32_t spp, double target_seconds,
-                 uint64_t initial_work = kInitialWork, uint64_t max_work = kMaxWork);
+                 uint64_t initial_work = kInitialWork, uint64_t max_work = kMaxWork,
+                 double whole_pass_seconds = 0);
 
     bool done() const { return samples_done_ >= stop_; }
     // Ends the render (for now) after `spp` samples per pixel: a checkpoint; at most the total.
@@ -35,6 +40,8 @@ class BatchPlanner {
 
     bool at_pass_boundary() const { return row_ == 0; }
     uint32_t samples_done() const { return samples_done_; } // whole passes
+    // The share of the rows of the pass under way that have its samples (0 at a boundary).
+    double pass_fraction() const { return double(row_) / double(height_); }
     double fraction_done() const;
     uint64_t work() const { return work_; } // pixel-samples planned per submission
     uint32_t max_samples() const { return max_samples_; }
@@ -52,6 +59,8 @@ class BatchPlanner {
     uint32_t stop_;
     double target_;
     uint64_t max_work_;
+    double whole_pass_;     // seconds; see the constructor
+    bool measured_ = false; // a batch has completed: work_ follows the device's throughput
     uint64_t work_;
     uint32_t max_samples_ = kMaxSamplesPerBatch;
     uint32_t samples_done_ = 0;

@@ -21,6 +21,10 @@ constexpr VkBufferUsageFlags kStorage = VK_BUFFER_USAGE_STORAGE_BUFFER_BIT |
 // A work item's estimate and tag in the sample buffer (interface.h, BINDING_SAMPLES).
 constexpr VkDeviceSize kSampleBytes = 4 * sizeof(float);
 
+// A launch's timestamps: before the render invocations, after them, after the resolve pass,
+// after the commands that follow it (BatchSplit).
+constexpr uint32_t kTimerMarks = 4;
+
 } // namespace
 
 uint32_t BatchSession::render_invocations(uint64_t items, uint64_t resident) {
@@ -46,7 +50,7 @@ BatchSession::BatchSession(const VulkanContext& ctx, const FlatScene& scene, con
       resolve_(ctx, tp_spirv_resolve, sizeof(tp_spirv_resolve),
                interface_slots(BINDING_COUNT, false), sizeof(BatchParams), RenderConstants{},
                false),
-      timer_(ctx) {
+      timer_(ctx, kTimerMarks) {
     for (uint32_t slot = 0; slot < sb.slots.size(); ++slot) {
         tracer.bind(slot, sb.slots[slot]);
         resolve_.bind(slot, sb.slots[slot]);
@@ -92,7 +96,7 @@ void BatchSession::clear() {
     std::memset(host_counters_.mapped(), 0, kCounterBytes);
 }
 
-bool BatchSession::run(const Batch& b) {
+bool BatchSession::run(const Batch& b, const std::function<void(VkCommandBuffer)>& after) {
     params_.sample_begin = sample_offset_ + b.sample_begin;
     params_.sample_count = b.sample_count;
     params_.row_begin = b.row_begin;
@@ -100,9 +104,10 @@ bool BatchSession::run(const Batch& b) {
     params_.item_count = batch_item_count(width_, b.row_begin, b.row_end, b.sample_count);
     ++params_.sample_tag;
     reserve_samples(params_.item_count);
+    split_ = {};
     bool cut_short = false;
     for (uint64_t camera = counter(COUNTER_CAMERA);; camera = counter(COUNTER_CAMERA)) {
-        launch();
+        launch(after);
         if (counter(COUNTER_TRUNCATED) == 0) return cut_short;
         if (counter(COUNTER_CAMERA) == camera)
             runtime_error("the Vulkan device ends shader loops before one path is traced "
@@ -245,34 +250,40 @@ void BatchSession::read_buffer(const Buffer& src, void* dst, size_t bytes) const
     std::memcpy(dst, host.mapped(), bytes);
 }
 
-// One submission: clear the cut-short and next-item counters, launch the render invocations,
-// resolve the estimates into the accumulators, copy the counters back.
-void BatchSession::launch() {
+// One submission: launch the render invocations, resolve the estimates into the accumulators,
+// record `after`, copy the counters back. The shaders clear the cut-short and next-item
+// counters (interface.h).
+void BatchSession::launch(const std::function<void(VkCommandBuffer)>& after) {
     const VkPipelineStageFlags stage = stages();
     const uint64_t resident = resident_invocations();
     const uint32_t invocations = render_invocations(params_.item_count, resident);
     const uint32_t rows = params_.row_end - params_.row_begin;
     const uint32_t resolve_groups =
-        (width_ * rows * slots_ + RESOLVE_GROUP_SIZE - 1) / RESOLVE_GROUP_SIZE;
+        (width_ * rows * resolve_slots(params_.sample_count, slots_) + RESOLVE_GROUP_SIZE - 1) /
+        RESOLVE_GROUP_SIZE;
     ctx_.submit_and_wait([&](VkCommandBuffer cmd) {
         record_shader_barrier(cmd, stage); // the previous launch's accumulator writes
-        vkCmdFillBuffer(cmd, counters_.handle(), COUNTER_TRUNCATED * sizeof(uint32_t),
-                        (COUNTER_WORDS - COUNTER_TRUNCATED) * sizeof(uint32_t), 0);
-        record_shader_barrier(cmd, stage);
-        timer_.record_begin(cmd);
+        timer_.record_mark(cmd, 0);
         if (debug_render_)
             tracer_.record_debug_launch(cmd, params_, invocations);
         else
             tracer_.record_launch(cmd, params_, invocations);
+        timer_.record_mark(cmd, 1);
         record_shader_barrier(cmd, stage);
         resolve_.record_dispatch(cmd, &params_, resolve_groups, 1, 1);
-        timer_.record_end(cmd);
+        timer_.record_mark(cmd, 2);
         record_shader_barrier(cmd, stage);
+        if (after) after(cmd);
+        timer_.record_mark(cmd, 3);
         const VkBufferCopy region{0, 0, kCounterBytes};
         vkCmdCopyBuffer(cmd, counters_.handle(), host_counters_.handle(), 1, &region);
         record_host_read_barrier(cmd);
     });
-    gpu_seconds_ += timer_.read_seconds();
+    const std::vector<double> t = timer_.read_intervals();
+    split_.trace += t[0];
+    split_.resolve += t[1];
+    split_.after += t[2];
+    gpu_seconds_ += t[0] + t[1];
     ++submissions_;
 }
 

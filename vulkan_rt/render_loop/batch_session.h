@@ -16,9 +16,16 @@
 #include "vulkan_rt/render_loop/render_loop.h"
 #include "vulkan_rt/render_loop/scene_buffers.h"
 
+#include <functional>
 #include <vector>
 
 namespace tp {
+
+// GPU seconds of one batch's passes, summed over its launches (zeros without timestamps): the
+// render invocations, the resolve pass, and the commands recorded after them (BatchSession::run).
+struct BatchSplit {
+    double trace = 0, resolve = 0, after = 0;
+};
 
 class BatchSession {
   public:
@@ -45,8 +52,11 @@ class BatchSession {
 
     // Traces the batch to completion. Dispatches are repeated while some pixels stopped early
     // (render_items.glsl, loop budget); each repetition traces only the items still untraced and
-    // resumes those pixels where they stopped. Returns whether that happened.
-    bool run(const Batch& b);
+    // resumes those pixels where they stopped. Returns whether that happened. `after` records
+    // commands into each launch's submission once the resolve pass's writes are visible to
+    // compute shaders (the viewer's display pass), so that a frame is one submission.
+    bool run(const Batch& b, const std::function<void(VkCommandBuffer)>& after = {});
+    const BatchSplit& last_split() const { return split_; } // of the last run()
 
     // Render invocations per launch at most: 65535 compute workgroups (the least
     // maxComputeWorkGroupCount[0] a device may have), also within every device's limit on a
@@ -96,7 +106,7 @@ class BatchSession {
     VkPipelineStageFlags stages() const {
         return tracer_.shader_stage() | VK_PIPELINE_STAGE_COMPUTE_SHADER_BIT;
     }
-    void launch();
+    void launch(const std::function<void(VkCommandBuffer)>& after);
 
     const VulkanContext& ctx_;
     Tracer& tracer_;
@@ -115,6 +125,7 @@ class BatchSession {
     GpuTimer timer_;
     BatchParams params_{};
     double gpu_seconds_ = 0;
+    BatchSplit split_;
     uint32_t submissions_ = 0, repeats_ = 0;
 };
 

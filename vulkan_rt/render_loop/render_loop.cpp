@@ -41,7 +41,9 @@ RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
     st.width = scene.params.camera.width;
     st.height = scene.params.camera.height;
     st.build_time_s = accel.build_time_s;
+    st.upload_time_s = accel.upload_time_s;
     st.accel_bytes = accel.bytes;
+    count_triangles(st, scene);
     for (const auto& [key, value] : accel.extra) st.extra[key] = value;
     st.pipeline = accel.pipeline;
 
@@ -99,6 +101,7 @@ RenderResult render_batches(const VulkanContext& ctx, const FlatScene& scene,
     st.extra["repeated_submissions"] = std::to_string(session.repeats());
     st.extra["render_invocations"] = std::to_string(session.resident_invocations());
     result.film = session.read_back(st);
+    st.device_memory_peak_bytes = ctx.memory_tally().peak();
     const DebugRequest& d = options.debug;
     if (d.aov) result.debug.aovs = session.aovs();
     const uint32_t K = options.sample_offset;

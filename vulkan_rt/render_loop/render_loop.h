@@ -51,7 +51,8 @@ bool debug_spirv_overridden();
 // What the mode built before rendering, for the statistics.
 struct AccelStats {
     double build_time_s = 0;
-    uint64_t bytes = 0; // RenderStats::accel_bytes
+    double upload_time_s = 0; // RenderStats::upload_time_s
+    uint64_t bytes = 0;       // RenderStats::accel_bytes
     std::map<std::string, std::string> extra;
     PipelineReport pipeline; // the render pipeline's (RenderStats::pipeline)
 };

@@ -88,6 +88,9 @@ RenderResult render_on_devices(const FlatScene& scene, const RenderOptions& opti
         st.rays += p.rays;
         // Devices render side by side: the render takes as long as the slowest of them.
         st.wall_time_s = std::max(st.wall_time_s, p.wall_time_s);
+        // Each device holds its own copy of the scene: the peak is the largest device's.
+        st.device_memory_peak_bytes =
+            std::max(st.device_memory_peak_bytes, p.device_memory_peak_bytes);
         st.gpu_time_s = st.gpu_time_s < 0 || p.gpu_time_s < 0 ? -1.0 : st.gpu_time_s + p.gpu_time_s;
         st.sample_ranges.insert(st.sample_ranges.end(), p.sample_ranges.begin(),
                                 p.sample_ranges.end());

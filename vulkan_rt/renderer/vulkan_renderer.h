@@ -19,11 +19,10 @@ struct VulkanOptions {
     // list: several devices at once (device_group.h).
     std::string device;
     VkModeRequest mode; // --vk-mode; none: auto (resolve_vk_mode)
-    // --bvh: compute mode's BVH layout (compute_mode/bvh_builder.h). The default is binary
-    // because wide, and auto's per-scene choice, are not yet at least as fast on every scene
-    // (docs/gpu.md, "Why --bvh defaults to binary"; the figures: BENCHMARKS.md, section
-    // "h200-wide-auto", and docs/learnt.md, "The 8-wide tree of Embree's builder").
-    BvhLayout bvh = BvhLayout::binary;
+    // --bvh: compute mode's BVH layout (compute_mode/bvh_builder.h). The default, auto, keeps
+    // the binary tree unless its expected traversal is long (docs/gpu.md, "Why --bvh defaults
+    // to auto").
+    BvhLayout bvh = BvhLayout::automatic;
     // --pipeline-stats: the driver's statistics of the render pipeline in RenderStats::pipeline
     // (pipeline_report.h); on a device without them a note on stderr, once per device opened.
     bool pipeline_statistics = false;
