@@ -363,7 +363,7 @@ def gltf_materials():
               "scale": [1.5, 1, 0.5]},
              {"name": "glass", "mesh": 2, "translation": [1.5, 0.3, 1.6], "scale": [0.3] * 3},
              # The leaf floats above the floor's front left, tilted, under the spot light.
-             {"name": "leaf", "mesh": 3, "translation": [-2.0, 0.9, 2.1],
+             {"name": "leaf", "mesh": 3, "translation": [-1.2, 0.9, 2.2],
               "rotation": [0.0871557, 0.0, 0.0, 0.9961947], "scale": [0.3, 1, 0.3]},
              # The pane stands upright in front of the plastic row, facing the camera.
              {"name": "pane", "mesh": 4, "translation": [0.5, 0.45, 1.8],
@@ -388,7 +388,7 @@ def gltf_materials():
                   "rotation": turn_minus_z_to([0, -3.2, -5.7])})
     nodes.append({"name": "sun", "rotation": turn_minus_z_to([-3, -5, -2]),
                   "extensions": {"KHR_lights_punctual": {"light": 0}}})
-    nodes.append({"name": "spot", "translation": [-1.9, 3.0, 2.2],
+    nodes.append({"name": "spot", "translation": [-1.1, 3.0, 2.3],
                   "rotation": turn_minus_z_to([0.05, -1, -0.05]),
                   "extensions": {"KHR_lights_punctual": {"light": 1}}})
     return {
