@@ -134,7 +134,8 @@ TEST_CASE("TLAS instance records carry the instance's transform and its index", 
     inst.to_world2 = vec4(1.5f, 0.0f, 3.0f, 11.0f);
     const uint64_t blas = 0x0000123456789a00ull;
     for (uint32_t index : {0u, 5u, 4095u, uint32_t(kMaxCustomIndex)}) {
-        const VkAccelerationStructureInstanceKHR r = instance_record(inst, index, blas, false, false);
+        const VkAccelerationStructureInstanceKHR r =
+            instance_record(inst, index, blas, false, false);
         const vec4 rows[3] = {inst.to_world0, inst.to_world1, inst.to_world2};
         for (int i = 0; i < 3; ++i)
             for (int j = 0; j < 4; ++j) CHECK(r.transform.matrix[i][j] == rows[i][j]);
