@@ -3,7 +3,8 @@
 # have only a driver: bin/twinpath, the shared libraries it needs beyond glibc, libstdc++,
 # libm, libgcc_s and the Vulkan loader (in lib/, found through the executable's RPATH), and
 # the bundled scenes. Output: build-gpu-bundle/twinpath-bundle/ and twinpath-bundle.tar.xz.
-# Limits (small enough to carry to a GPU node with the scene): 60 MB unpacked, 20 MB compressed.
+# Limits: 20 MB compressed, what travels to a GPU node beside the Vulkan loader and a scene (the
+# device tool carries 64 MiB in all); 80 MB unpacked, most of it Debian's Embree with every ISA.
 set -euo pipefail
 cd "$(dirname "$0")/.."
 cmake --preset gpu-bundle >/dev/null
@@ -28,7 +29,7 @@ unpacked=$(du -sb "$dest" | cut -f1)
 packed=$(stat -c %s "$build/twinpath-bundle.tar.xz")
 echo "bundle: $dest ($((unpacked / 1000000)) MB), $build/twinpath-bundle.tar.xz ($((packed / 1000000)) MB)"
 ls "$dest/lib"
-if ((unpacked > 60000000 || packed > 20000000)); then
-  echo "error: the bundle exceeds 60 MB unpacked or 20 MB compressed" >&2
+if ((unpacked > 80000000 || packed > 20000000)); then
+  echo "error: the bundle exceeds 80 MB unpacked or 20 MB compressed" >&2
   exit 1
 fi
