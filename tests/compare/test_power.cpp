@@ -22,6 +22,27 @@
 using namespace tp;
 using namespace tp::test;
 
+namespace {
+
+// How many of n synthetic pairs, image A with a uniform bias 1 + b (seeds seed + 2i and
+// seed + 2i + 1), the global test rejects at `level`.
+size_t global_detections(const SyntheticSpec& spec, double b, double level, size_t n,
+                         uint64_t seed) {
+    Bias bias;
+    bias.scale = 1 + b;
+    bias.x1 = spec.width;
+    bias.y1 = spec.height;
+    size_t detected = 0;
+    for (size_t i = 0; i < n; ++i) {
+        const CompareResult r = compare_images(synthetic_render(spec, seed + 2 * i, bias),
+                                               synthetic_render(spec, seed + 2 * i + 1), {});
+        detected += r.global.p_value <= level;
+    }
+    return detected;
+}
+
+} // namespace
+
 TEST_CASE("power of the global test follows the noncentral chi-square", "[compare][power]") {
     // A uniform +1.5% bias, Gaussian noise, independent channels (so the scale g ~ 1). Under
     // H1 X ~ chi2'(3K, lambda) with lambda = sum over tile-channels of (sum_i b mu_i)^2 /
@@ -50,16 +71,7 @@ TEST_CASE("power of the global test follows the noncentral chi-square", "[compar
     const double predicted = boost::math::cdf(
         boost::math::complement(boost::math::non_central_chi_squared(3.0 * k, lambda), crit));
     const size_t n = 200;
-    size_t detected = 0;
-    Bias bias;
-    bias.scale = 1 + b;
-    bias.x1 = spec.width;
-    bias.y1 = spec.height;
-    for (size_t i = 0; i < n; ++i) {
-        const CompareResult r = compare_images(synthetic_render(spec, 7000 + 2 * i, bias),
-                                               synthetic_render(spec, 7001 + 2 * i), {});
-        detected += r.global.p_value <= level;
-    }
+    const size_t detected = global_detections(spec, b, level, n, 7000);
     const CountInterval ci = binomial_interval99(n, predicted);
     INFO("lambda " << lambda << ", predicted power " << predicted << ", detected " << detected
                    << " of " << n << ", 99% interval [" << ci.lo << ", " << ci.hi << "]");
@@ -100,16 +112,7 @@ TEST_CASE("the power model of verify predicts the global test's power, with inde
             CHECK(predicted == Approx(exact).margin(0.02));
         }
         const size_t n = 200;
-        size_t detected = 0;
-        Bias bias;
-        bias.scale = 1 + b;
-        bias.x1 = spec.width;
-        bias.y1 = spec.height;
-        for (size_t i = 0; i < n; ++i) {
-            const CompareResult res = compare_images(synthetic_render(spec, 9000 + 2 * i, bias),
-                                                     synthetic_render(spec, 9001 + 2 * i), {});
-            detected += res.global.p_value <= level;
-        }
+        const size_t detected = global_detections(spec, b, level, n, 9000);
         const CountInterval ci = binomial_interval99(n, predicted);
         INFO((identical ? "identical" : "independent")
              << " channels: model power " << predicted << ", detected " << detected << " of " << n
