@@ -54,8 +54,8 @@ TEST_CASE("glTF material furnace: a flat surface renders its directional albedo 
 
 // Light that arrives through a transmitting surface (pbr_furnace.h, FurnaceCase::transmits):
 // next-event estimation samples the environment below it and weighs it by |dot(ns, wi)|
-// (common/shared/integrator.h, step 3); with the signed cosine such a sample was subtracted and
-// the thin-walled transmitter rendered 13 % dark.
+// (common/shared/integrator.h, step 3): with the signed cosine such a sample would be
+// subtracted and a thin-walled transmitter render darker than its albedo.
 TEST_CASE("glTF material furnace through the surface on the CPU", "[integration][pbr]") {
     check_furnaces(true);
 }

@@ -44,8 +44,8 @@ TEST_CASE("verify finds a planted uniform 1% bias at the spp it plans", "[verify
     CpuEngine reference(a), biased(b);
     // Trials: each a whole verification with its own seeds. At a power of exactly 0.9, 6 or
     // fewer detections of 10 happen with probability 0.013 and 5 or fewer 0.0016; the plan takes
-    // the noise at its lower 90 % confidence bound (verify/pilot.h), and the power measured with
-    // many trials is above 0.9 (BENCHMARKS.md, "verify-promise").
+    // the noise at its lower 97.5 % confidence bound (verify/pilot.h), and the power measured
+    // with many trials is above 0.9 (BENCHMARKS.md, "verify-promise").
     // benchmarks/verify-promise.sh runs more trials through TWINPATH_TEST_TRIALS.
     const char* more = std::getenv("TWINPATH_TEST_TRIALS");
     const size_t trials = more ? size_t(std::stoul(more)) : 10;
